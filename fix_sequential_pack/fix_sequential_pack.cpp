@@ -1,0 +1,452 @@
+/* fix sequential/pack: LIGGGHTS adapter of the sequential packer.
+   See fix_sequential_pack.h and docs/fix_sequential_pack.md. */
+
+#include "fix_sequential_pack.h"
+
+#include <mpi.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "region.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+
+// What one particle costs: the packer's data on every rank (measured by
+// bench/pack_bench, about 150 B) plus a LIGGGHTS granular atom with its
+// neighbour and contact-history data on its owning rank (a generous 2 kB).
+constexpr double kPackerBytes = 200.0, kAtomBytes = 2048.0;
+
+std::string fmt(const char *f, double v) {
+  char b[64];
+  snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+}  // namespace
+
+FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg),
+      psd_(nullptr),
+      arrangement_(fabric::Arrangement::discrete),
+      porosity_(-1.0),
+      density_(2650.0),
+      nintervals_(20),
+      atom_type_(1),
+      seed_(0),
+      fill_pores_(true),
+      verbose_(true),
+      inserted_(0),
+      interval_(nullptr) {
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
+    error->all(FLERR, "Fix sequential/pack requires atom_style granular "
+                      "(sphere: radius, rmass, omega)");
+  parse(narg, arg);
+
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  peratom_freq = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  atom->add_callback(1);
+  for (int i = 0; i < atom->nlocal; ++i) interval_[i] = 0.0;
+}
+
+FixSequentialPack::~FixSequentialPack() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(interval_);
+  delete psd_;
+}
+
+void FixSequentialPack::parse(int narg, char **arg) {
+  auto fail = [&](const std::string &m) {
+    error->all(FLERR, ("Fix sequential/pack: " + m).c_str());
+  };
+  auto need_value = [&](int i, const char *kw, const char *what) {
+    if (i + 1 >= narg)
+      fail(std::string("keyword '") + kw + "' needs a value: " + what);
+  };
+  auto number = [&](const char *s, const char *kw) {
+    char *end = nullptr;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || !std::isfinite(v))
+      fail(std::string(kw) + " '" + s + "' is not a number");
+    return v;
+  };
+  auto integer = [&](const char *s, const char *kw) {
+    char *end = nullptr;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end != '\0')
+      fail(std::string(kw) + " '" + s + "' is not an integer");
+    return v;
+  };
+  auto yesno = [&](const char *s, const char *kw) {
+    if (strcmp(s, "yes") == 0) return true;
+    if (strcmp(s, "no") == 0) return false;
+    fail(std::string(kw) + " '" + s + "' must be yes or no");
+    return false;
+  };
+  bool have_arrangement = false;
+  long seed = 0;
+  for (int i = 3; i < narg; i += 2) {
+    const char *kw = arg[i];
+    if (strcmp(kw, "psd") == 0) {
+      need_value(i, kw, "a sieve-analysis file");
+      psd_file_ = arg[i + 1];
+    } else if (strcmp(kw, "porosity") == 0) {
+      need_value(i, kw, "a number in (0, 1)");
+      porosity_ = number(arg[i + 1], kw);
+      if (!(porosity_ > 0.0 && porosity_ < 1.0))
+        fail("porosity " + std::string(arg[i + 1]) +
+             " must lie strictly between 0 and 1");
+    } else if (strcmp(kw, "arrangement") == 0) {
+      need_value(i, kw, "discrete or layerwise");
+      if (strcmp(arg[i + 1], "discrete") == 0)
+        arrangement_ = fabric::Arrangement::discrete;
+      else if (strcmp(arg[i + 1], "layerwise") == 0)
+        arrangement_ = fabric::Arrangement::layerwise;
+      else
+        fail("arrangement '" + std::string(arg[i + 1]) +
+             "' is unknown: use discrete or layerwise");
+      have_arrangement = true;
+    } else if (strcmp(kw, "region") == 0) {
+      need_value(i, kw, "a region ID");
+      region_id_ = arg[i + 1];
+    } else if (strcmp(kw, "seed") == 0) {
+      need_value(i, kw, "a positive integer");
+      seed = integer(arg[i + 1], kw);
+      if (seed <= 0 || seed > INT32_MAX)
+        fail("seed " + std::string(arg[i + 1]) +
+             " must be a positive integer (1..2147483647)");
+    } else if (strcmp(kw, "intervals") == 0) {
+      need_value(i, kw, "an integer in 1..100");
+      long n = integer(arg[i + 1], kw);
+      if (n < 1 || n > 100)
+        fail("intervals " + std::string(arg[i + 1]) + " must lie in 1..100");
+      nintervals_ = static_cast<int>(n);
+    } else if (strcmp(kw, "density") == 0) {
+      need_value(i, kw, "a positive number");
+      density_ = number(arg[i + 1], kw);
+      if (!(density_ > 0.0))
+        fail("density " + std::string(arg[i + 1]) + " must be positive");
+    } else if (strcmp(kw, "type") == 0) {
+      need_value(i, kw, "an atom type");
+      long t = integer(arg[i + 1], kw);
+      if (t < 1 || t > atom->ntypes)
+        fail("type " + std::string(arg[i + 1]) + " must lie in 1.." +
+             std::to_string(atom->ntypes) + " (the box's atom types)");
+      atom_type_ = static_cast<int>(t);
+    } else if (strcmp(kw, "fill_pores") == 0) {
+      need_value(i, kw, "yes or no");
+      fill_pores_ = yesno(arg[i + 1], kw);
+    } else if (strcmp(kw, "verbose") == 0) {
+      need_value(i, kw, "yes or no");
+      verbose_ = yesno(arg[i + 1], kw);
+    } else {
+      fail("unknown keyword '" + std::string(kw) +
+           "': allowed are psd porosity arrangement region seed intervals "
+           "density type fill_pores verbose");
+    }
+  }
+  if (psd_file_.empty()) fail("keyword 'psd FILE' is required");
+  if (porosity_ < 0.0) fail("keyword 'porosity P' is required");
+  if (!have_arrangement)
+    fail("keyword 'arrangement discrete|layerwise' is required");
+  if (region_id_.empty()) fail("keyword 'region ID' is required");
+  if (seed == 0) fail("keyword 'seed N' is required");
+  seed_ = static_cast<int>(seed);
+
+  // The container.
+  int iregion = domain->find_region(const_cast<char *>(region_id_.c_str()));
+  if (iregion < 0) fail("region '" + region_id_ + "' does not exist");
+  Region *reg = domain->regions[iregion];
+  if (strcmp(reg->style, "block") != 0)
+    fail("region '" + region_id_ + "' is style " + reg->style +
+         "; the container must be a block region");
+  if (!reg->interior)
+    fail("region '" + region_id_ + "' must be 'side in'");
+  lo_[0] = reg->extent_xlo, hi_[0] = reg->extent_xhi;
+  lo_[1] = reg->extent_ylo, hi_[1] = reg->extent_yhi;
+  lo_[2] = reg->extent_zlo, hi_[2] = reg->extent_zhi;
+  for (int a = 0; a < 3; ++a)
+    if (lo_[a] < domain->boxlo[a] - 1e-12 * domain->prd[a] ||
+        hi_[a] > domain->boxhi[a] + 1e-12 * domain->prd[a])
+      fail("region '" + region_id_ + "' extends outside the simulation box "
+           "along " + "xyz"[a] + ": " + fmt("%g", lo_[a]) + ".." +
+           fmt("%g", hi_[a]) + " vs box " + fmt("%g", domain->boxlo[a]) +
+           ".." + fmt("%g", domain->boxhi[a]));
+
+  // The PSD and the particle list.
+  try {
+    psd_ = new fabric::ParticleSizeDistribution(
+        fabric::ParticleSizeDistribution::read(psd_file_));
+    intervals_ = psd_->equal_mass_intervals(nintervals_);
+  } catch (const std::exception &e) {
+    fail(e.what());
+  }
+  double dmax = intervals_.back().d_mean;
+  for (int a = 0; a < 3; ++a)
+    if (hi_[a] - lo_[a] < dmax)
+      fail("container '" + region_id_ + "' is " + fmt("%g", hi_[a] - lo_[a]) +
+           " wide along " + "xyz"[a] + ", smaller than the largest particle "
+           "(diameter " + fmt("%g", dmax) + " of the coarsest interval)");
+  double volume = (hi_[0] - lo_[0]) * (hi_[1] - lo_[1]) * (hi_[2] - lo_[2]);
+  list_ = fabric::particle_list(intervals_, volume, porosity_);
+  double total = 0.0;
+  for (double t : list_.target_count) total += t;
+  long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  double memory = pages > 0 && page > 0 ? double(pages) * page : 64e9;
+  double need = total * (kPackerBytes * comm->nprocs + kAtomBytes);
+  if (total > INT32_MAX / 4 || need > 0.8 * memory)
+    fail("the container holds about " + fmt("%.4g", total) +
+         " particles at this porosity and PSD, needing about " +
+         fmt("%.3g", need / 1073741824.0) + " GiB (" +
+         fmt("%.0f", kPackerBytes) + " B per particle on each of " +
+         std::to_string(comm->nprocs) + " ranks plus " +
+         fmt("%.0f", kAtomBytes) + " B per atom), more than the " +
+         fmt("%.3g", memory / 1073741824.0) +
+         " GiB here (and at most " + std::to_string(INT32_MAX / 4) +
+         " particles): use a smaller region or a coarser PSD");
+  if (list_.total() < 3)
+    fail("the container holds only " + std::to_string(list_.total()) +
+         " particles of this PSD; at least 3 are needed: use a larger region");
+}
+
+int FixSequentialPack::setmask() { return PRE_EXCHANGE; }
+
+double FixSequentialPack::max_rad(int type) {
+  return type == atom_type_ ? 0.5 * intervals_.back().d_mean : 0.0;
+}
+
+double FixSequentialPack::min_rad(int type) {
+  return type == atom_type_ ? 0.5 * intervals_.front().d_mean : 0.0;
+}
+
+void FixSequentialPack::message(const std::string &text) {
+  if (comm->me != 0) return;
+  if (screen) fprintf(screen, "%s\n", text.c_str());
+  if (logfile) fprintf(logfile, "%s\n", text.c_str());
+}
+
+void FixSequentialPack::setup_pre_exchange() {
+  if (inserted_) return;  // done before, or restored by read_restart
+  insert_specimen();
+  inserted_ = 1;
+}
+
+void FixSequentialPack::insert_specimen() {
+  fabric::PackingSpec spec;
+  spec.lo = fabric::Vec3(lo_[0], lo_[1], lo_[2]);
+  spec.hi = fabric::Vec3(hi_[0], hi_[1], hi_[2]);
+  for (size_t k = 0; k < list_.count.size(); ++k) {
+    spec.radius.push_back(0.5 * list_.diameter[k]);
+    spec.count.push_back(list_.count[k]);
+  }
+  spec.arrangement = arrangement_;
+  spec.seed = static_cast<std::uint64_t>(seed_);
+  spec.fill_pores = fill_pores_;
+  if (verbose_)
+    spec.progress = [this](long long placed, long long total) {
+      char b[128];
+      snprintf(b, sizeof b, "  sequential/pack: %lld of %lld placed (%.0f%%)",
+               placed, total, 100.0 * placed / total);
+      message(b);
+    };
+  message("fix sequential/pack: packing " + std::to_string(list_.total()) +
+          " particles (" + fabric::to_string(arrangement_) + ")");
+  double t0 = MPI_Wtime();
+  fabric::PackingResult res;
+  try {
+    res = fabric::pack(spec);
+  } catch (const std::exception &e) {
+    error->all(FLERR, ("Fix sequential/pack: " + std::string(e.what())).c_str());
+  }
+  double seconds = MPI_Wtime() - t0;
+
+  // Tags follow the placement order after the largest existing tag, so every
+  // rank count gives each sphere the same ID.
+  tagint maxtag_local = 0, maxtag = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    maxtag_local = std::max(maxtag_local, atom->tag[i]);
+  MPI_Allreduce(&maxtag_local, &maxtag, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+
+  for (int j = 0; j < modify->nfix; ++j)
+    if (modify->fix[j]->create_attribute) modify->fix[j]->pre_set_arrays();
+  bigint mine = 0;
+  for (long long i = 0; i < res.placed(); ++i) {
+    double x[3] = {res.centre[i][0], res.centre[i][1], res.centre[i][2]};
+    if (!domain->is_in_subdomain(x)) continue;
+    atom->avec->create_atom(atom_type_, x);
+    int m = atom->nlocal - 1;
+    atom->tag[m] = maxtag + static_cast<tagint>(i) + 1;
+    atom->mask[m] = 1 | groupbit;
+    atom->v[m][0] = atom->v[m][1] = atom->v[m][2] = 0.0;
+    atom->omega[m][0] = atom->omega[m][1] = atom->omega[m][2] = 0.0;
+    double r = res.radius[i];
+    atom->radius[m] = r;
+    atom->density[m] = density_;
+    atom->rmass[m] = 4.0 * M_PI / 3.0 * r * r * r * density_;
+    for (int j = 0; j < modify->nfix; ++j)
+      if (modify->fix[j]->create_attribute) modify->fix[j]->set_arrays(m);
+    interval_[m] = res.size_class[i] + 1;
+    ++mine;
+  }
+  bigint all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all != res.placed())
+    error->all(FLERR, ("Fix sequential/pack: " + std::to_string(all) +
+                       " of " + std::to_string(res.placed()) +
+                       " particles landed in a subdomain; the container "
+                       "must lie inside the simulation box").c_str());
+  atom->natoms += all;
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+  print_summary(res, seconds);
+}
+
+void FixSequentialPack::print_summary(const fabric::PackingResult &res,
+                                      double seconds) {
+  if (comm->me != 0) return;
+  const size_t n = intervals_.size();
+  double vol = (hi_[0] - lo_[0]) * (hi_[1] - lo_[1]) * (hi_[2] - lo_[2]);
+  double placed_vol = 0.0, inner_vol = 0.0;
+  std::vector<double> placed_mass(n, 0.0);
+  for (long long i = 0; i < res.placed(); ++i) {
+    double v = 4.0 * M_PI / 3.0 * std::pow(res.radius[i], 3);
+    placed_vol += v;
+    placed_mass[res.size_class[i]] += v;
+    bool inner = true;  // centre in the central half of each side
+    for (int a = 0; a < 3; ++a) {
+      double q = (res.centre[i][a] - lo_[a]) / (hi_[a] - lo_[a]);
+      inner = inner && q > 0.25 && q < 0.75;
+    }
+    if (inner) inner_vol += v;
+  }
+  double achieved = 1.0 - placed_vol / vol;
+  double inner = 1.0 - inner_vol / (vol / 8.0);
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(4);
+  s << "fix sequential/pack summary\n"
+    << "  PSD " << psd_file_ << ": " << psd_->points().size()
+    << " points, d10 = " << psd_->d10() << ", d60 = " << psd_->d60()
+    << ", Cu = " << psd_->uniformity_coefficient() << "\n"
+    << "  container " << region_id_ << ": volume " << vol << ", arrangement "
+    << fabric::to_string(arrangement_) << ", seed " << seed_ << ", "
+    << n << " equal-mass intervals\n"
+    << "  interval   d_mean       target    count   placed  mass%PSD  "
+       "mass%placed\n";
+  s.unsetf(std::ios::fixed);
+  long long not_placed = 0;
+  for (size_t k = 0; k < n; ++k) {
+    char row[160];
+    not_placed += list_.count[k] - res.placed_per_class[k];
+    snprintf(row, sizeof row, "  %8zu %9.4g %12.2f %8lld %8lld %9.2f %12.2f\n",
+             k + 1, intervals_[k].d_mean, list_.target_count[k],
+             list_.count[k], res.placed_per_class[k],
+             100.0 * intervals_[k].mass_fraction,
+             placed_vol > 0 ? 100.0 * placed_mass[k] / placed_vol : 0.0);
+    s << row;
+  }
+  char b[512];
+  snprintf(b, sizeof b,
+           "  particles: %lld in the list (rounding gives a list porosity of "
+           "%.5f), %lld placed, %lld not placed\n"
+           "  placed by: first face %lld, trilateration %lld, constriction "
+           "centre %lld, touching two %lld, against a wall %lld; second "
+           "loop %lld\n"
+           "  porosity: target %.4f, achieved %.4f over the container, %.4f "
+           "in its central eighth\n"
+           "  time: %.3f s (%.0f particles per second)\n",
+           list_.total(), 1.0 - list_.solid_volume() / vol, res.placed(),
+           not_placed, res.placed_by[0], res.placed_by[1], res.placed_by[2],
+           res.placed_by[3], res.placed_by[4], res.placed_in_second_loop,
+           porosity_, achieved, inner, seconds,
+           seconds > 0 ? res.placed() / seconds : 0.0);
+  s << b;
+  message(s.str());
+  if (std::abs(achieved - porosity_) > 0.005) {
+    snprintf(b, sizeof b,
+             "Fix sequential/pack: target porosity %.4f not reached: achieved "
+             "%.4f with %lld of %lld particles not placed. Raise the porosity, "
+             "use a larger container (the layer along the walls packs "
+             "looser), or arrangement discrete",
+             porosity_, achieved, not_placed, list_.total());
+    error->warning(FLERR, b);
+  }
+}
+
+/* ---- per-atom interval index ---------------------------------------- */
+
+void FixSequentialPack::grow_arrays(int nmax) {
+  memory->grow(interval_, nmax, "sequential/pack:interval");
+  vector_atom = interval_;
+}
+
+void FixSequentialPack::copy_arrays(int i, int j, int) {
+  interval_[j] = interval_[i];
+}
+
+void FixSequentialPack::set_arrays(int i) { interval_[i] = 0.0; }
+
+int FixSequentialPack::pack_exchange(int i, double *buf) {
+  buf[0] = interval_[i];
+  return 1;
+}
+
+int FixSequentialPack::unpack_exchange(int nlocal, double *buf) {
+  interval_[nlocal] = buf[0];
+  return 1;
+}
+
+int FixSequentialPack::pack_restart(int i, double *buf) {
+  buf[0] = 2;
+  buf[1] = interval_[i];
+  return 2;
+}
+
+void FixSequentialPack::unpack_restart(int nlocal, int nth) {
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; ++i) m += static_cast<int>(extra[nlocal][m]);
+  interval_[nlocal] = extra[nlocal][m + 1];
+}
+
+double FixSequentialPack::memory_usage() {
+  return atom->nmax * sizeof(double);
+}
+
+void FixSequentialPack::write_restart(FILE *fp) {
+  double list[1] = {static_cast<double>(inserted_)};
+  if (comm->me == 0) {
+    int size = sizeof(list);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 1, fp);
+  }
+}
+
+void FixSequentialPack::restart(char *buf) {
+  inserted_ = static_cast<int>(reinterpret_cast<double *>(buf)[0]);
+}

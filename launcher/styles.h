@@ -1,0 +1,39 @@
+// The styles this project adds to LIGGGHTS, by name. The launcher registers
+// them; users with their own LIGGGHTS build copy the style sources into its
+// src/ instead (their FixStyle/ComputeStyle blocks do the same there).
+#ifndef FABRIC_STYLES_H
+#define FABRIC_STYLES_H
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fix_sequential_pack.h"
+
+namespace fabric_styles {
+
+template <class T>
+LAMMPS_NS::Fix *make_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg) {
+  return new T(lmp, narg, arg);
+}
+template <class T>
+LAMMPS_NS::Compute *make_compute(LAMMPS_NS::LAMMPS *lmp, int iarg, int narg,
+                                 char **arg) {
+  return new T(lmp, iarg, narg, arg);  // LIGGGHTS computes take iarg too
+}
+
+using FixCreator = LAMMPS_NS::Fix *(*)(LAMMPS_NS::LAMMPS *, int, char **);
+using ComputeCreator =
+    LAMMPS_NS::Compute *(*)(LAMMPS_NS::LAMMPS *, int, int, char **);
+
+inline std::vector<std::pair<std::string, FixCreator>> fixes() {
+  return {{"sequential/pack", &make_fix<LAMMPS_NS::FixSequentialPack>}};
+}
+
+inline std::vector<std::pair<std::string, ComputeCreator>> computes() {
+  return {};
+}
+
+}  // namespace fabric_styles
+
+#endif
