@@ -82,6 +82,7 @@ class FrontPacker {
   double target_density_ = 0.0;  // solid volume of the list / container
   double margin_ = 0.0;          // volume-weighted mean radius of the list
   std::vector<double> sample_dist_;  // sorted centre distances of a lattice
+  std::vector<double> draw_weight_, volume_;  // per class
 };
 
 FrontPacker::FrontPacker(const PackingSpec& spec)
@@ -115,6 +116,10 @@ FrontPacker::FrontPacker(const PackingSpec& spec)
                                 std::to_string(INT32_MAX / 4) + " spheres");
   total_left_ = total_;
   centre_ = 0.5 * (spec.lo + spec.hi);
+  for (double r : spec.radius) {
+    draw_weight_.push_back(std::pow(r, kDrawExponent));
+    volume_.push_back(4.0 / 3.0 * M_PI * r * r * r);
+  }
   double vol = 0.0, r4 = 0.0;
   for (size_t k = 0; k < spec.radius.size(); ++k) {
     double r = spec.radius[k];
@@ -160,10 +165,10 @@ int FrontPacker::take_random_left(Random& rng) {
   // Weighted by the volume left in each class, so every class advances at
   // its mass share and the specimen is homogeneous by mass.
   double total = 0.0;
-  for (int k : by_size_) total += left_[k] * std::pow(spec_.radius[k], kDrawExponent);
+  for (int k : by_size_) total += left_[k] * draw_weight_[k];
   double pick = rng.uniform() * total;
   for (int k : by_size_) {
-    double w = left_[k] * std::pow(spec_.radius[k], kDrawExponent);
+    double w = left_[k] * draw_weight_[k];
     if (left_[k] > 0 && pick < w) return k;
     pick -= w;
   }
@@ -188,7 +193,7 @@ void FrontPacker::add_sphere(const Vec3& c, int k, Placement how) {
   ++res_.placed_by[static_cast<int>(how)];
   --left_[k];
   --total_left_;
-  placed_volume_ += 4.0 / 3.0 * M_PI * std::pow(spec_.radius[k], 3);
+  placed_volume_ += volume_[k];
 }
 
 void FrontPacker::place_first_face() {
@@ -207,14 +212,20 @@ void FrontPacker::place_first_face() {
 
   double r0 = spec_.radius[k[0]], r1 = spec_.radius[k[1]],
          r2 = spec_.radius[k[2]];
-  Vec3 c0 = 0.5 * (spec_.lo + spec_.hi);
-  Vec3 u = rng.unit_vector();
-  Vec3 c1 = c0 + (r0 + r1) * u;
-  Vec3 w = rng.unit_vector();
-  w -= w.dot(u) * u;
-  if (w.norm() < 1e-6) w = u.unitOrthogonal();
-  auto c2 = touch_two_in_plane(Sphere{c0, r0}, Sphere{c1, r1}, c0 + w, r2);
-  if (!c2 || !inside(c0, r0) || !inside(c1, r1) || !inside(*c2, r2))
+  Vec3 c0 = 0.5 * (spec_.lo + spec_.hi), c1;
+  std::optional<Vec3> c2;
+  // A random orientation; in a tight container, the first of a few that fits.
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    Vec3 u = rng.unit_vector();
+    c1 = c0 + (r0 + r1) * u;
+    Vec3 w = rng.unit_vector();
+    w -= w.dot(u) * u;
+    if (w.norm() < 1e-6) w = u.unitOrthogonal();
+    c2 = touch_two_in_plane(Sphere{c0, r0}, Sphere{c1, r1}, c0 + w, r2);
+    if (c2 && inside(c0, r0) && inside(c1, r1) && inside(*c2, r2)) break;
+    c2.reset();
+  }
+  if (!c2)
     throw std::invalid_argument(
         "container is too small for the first face: the largest sphere "
         "(diameter " + std::to_string(2 * r0) + ") and its two companions "

@@ -38,7 +38,9 @@ std::optional<MirrorPair> trilaterate(const Sphere& s1, const Sphere& s2,
   double z2 = R1 * R1 - x * x - y * y;
   if (!(z2 >= 0.0)) return std::nullopt;
   double z = std::sqrt(z2);
-  return MirrorPair{f->to_global(x, y, z), f->to_global(x, y, -z)};
+  MirrorPair m{f->to_global(x, y, z), f->to_global(x, y, -z)};
+  if (!m.positive.allFinite() || !m.negative.allFinite()) return std::nullopt;
+  return m;
 }
 
 std::optional<Constriction> constriction(const Sphere& s1, const Sphere& s2,
@@ -79,7 +81,9 @@ std::optional<Constriction> constriction(const Sphere& s1, const Sphere& s2,
     double l2 = (x - x3 * l3) / x2;
     double l1 = 1.0 - l2 - l3;
     if (l1 < -eps || l2 < -eps || l3 < -eps) continue;
-    if (!best || rc < best->radius) best = Constriction{f->to_global(x, y, 0.0), rc};
+    Vec3 centre = f->to_global(x, y, 0.0);
+    if (!centre.allFinite()) continue;
+    if (!best || rc < best->radius) best = Constriction{centre, rc};
   }
   return best;
 }
@@ -97,7 +101,9 @@ std::optional<Vec3> touch_two_in_plane(const Sphere& a, const Sphere& b,
   if (!(wn > 1e-12 * d)) return std::nullopt;
   double x = (Ra * Ra - Rb * Rb + d * d) / (2.0 * d);
   double h = std::sqrt(std::max(0.0, Ra * Ra - x * x));
-  return Vec3(a.centre + x * ex + h * (w / wn));
+  Vec3 p = a.centre + x * ex + h * (w / wn);
+  if (!p.allFinite()) return std::nullopt;
+  return p;
 }
 
 std::optional<MirrorPair> touch_two_and_plane(const Sphere& a, const Sphere& b,
@@ -119,7 +125,9 @@ std::optional<MirrorPair> touch_two_and_plane(const Sphere& a, const Sphere& b,
   double h2 = ra2 - x * x;
   if (h2 < 0.0) return std::nullopt;
   double h = std::sqrt(h2);
-  return MirrorPair{pa + x * ex + h * ey, pa + x * ex - h * ey};
+  MirrorPair m{pa + x * ex + h * ey, pa + x * ex - h * ey};
+  if (!m.positive.allFinite() || !m.negative.allFinite()) return std::nullopt;
+  return m;
 }
 
 bool nearly_equilateral(const Vec3& c1, const Vec3& c2, const Vec3& c3,
