@@ -1,0 +1,17 @@
+#!/bin/bash
+# Installs, from Debian 12's packages, whatever the project needs and this
+# machine lacks. Needs root (or sudo) and apt.
+set -euo pipefail
+packages=(liggghts libliggghts-dev liggghts-doc libopenmpi-dev openmpi-bin
+          libeigen3-dev libgtest-dev cmake g++ make python3-numpy
+          python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
