@@ -52,7 +52,8 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
       fill_pores_(true),
       verbose_(true),
       inserted_(0),
-      interval_(nullptr) {
+      interval_(nullptr),
+      nmax_(0) {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
     error->all(FLERR, "Fix sequential/pack requires atom_style granular "
                       "(sphere: radius, rmass, omega)");
@@ -60,14 +61,15 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
 
   restart_global = 1;
   restart_peratom = 1;
-  create_attribute = 1;
+  // No create_attribute: LIGGGHTS' first setup calls set_arrays() on every
+  // atom of such fixes, which would wipe the index; new slots are zeroed in
+  // grow_arrays instead.
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(0);
   atom->add_callback(1);
-  for (int i = 0; i < atom->nlocal; ++i) interval_[i] = 0.0;
 }
 
 FixSequentialPack::~FixSequentialPack() {
@@ -347,8 +349,8 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
   double achieved = 1.0 - placed_vol / vol;
   double inner = 1.0 - inner_vol / (vol / 8.0);
   std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(4);
+  s.unsetf(std::ios::fixed);
+  s.precision(5);
   s << "fix sequential/pack summary\n"
     << "  PSD " << psd_file_ << ": " << psd_->points().size()
     << " points, d10 = " << psd_->d10() << ", d60 = " << psd_->d60()
@@ -358,7 +360,6 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
     << n << " equal-mass intervals\n"
     << "  interval   d_mean       target    count   placed  mass%PSD  "
        "mass%placed\n";
-  s.unsetf(std::ios::fixed);
   long long not_placed = 0;
   for (size_t k = 0; k < n; ++k) {
     char row[160];
@@ -402,6 +403,8 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
 
 void FixSequentialPack::grow_arrays(int nmax) {
   memory->grow(interval_, nmax, "sequential/pack:interval");
+  for (int i = nmax_; i < nmax; ++i) interval_[i] = 0.0;
+  nmax_ = nmax;
   vector_atom = interval_;
 }
 

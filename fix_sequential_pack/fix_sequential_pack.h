@@ -74,6 +74,7 @@ class FixSequentialPack : public Fix {
   double lo_[3], hi_[3];
   int inserted_;
   double *interval_;  // per atom: interval index 1..N, 0 = not from this fix
+  int nmax_;          // length of interval_
 };
 
 }  // namespace LAMMPS_NS

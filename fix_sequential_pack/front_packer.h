@@ -3,15 +3,24 @@
 // Plain C++, no LIGGGHTS include. The largest sphere and two companions form
 // the first face at the container centre. Faces are oriented triangles of
 // sphere centres whose right-hand normal points to their open side; they are
-// taken in turn (first in, first out). A sphere is attached to a face by
+// taken in turn, the one nearest the container centre first, so the front
+// grows as a compact ball out to the walls. A sphere is attached to a face by
 // trilateration (Eq. 1) or, when it is too small for Eq. 1, by the fallbacks
 // of Figs. 7-8; if it overlaps no sphere and no wall the face closes, the
 // sphere is used and its three new faces open. On overlap the arrangement
 // rule decides (the one place where the two rules differ: next_candidate):
 //   layerwise (LA): spheres are used strictly largest first and the face
-//                   closes, so like sizes end up next to each other;
-//   discrete  (DA): the next smaller size is tried on the same face before it
+//                   closes for that size, so like sizes end up together;
+//   discrete  (DA): spheres come in a random sequence drawn by the volume
+//                   left per size (weighted towards coarse sizes); on overlap
+//                   the smaller sizes are tried on the same face before it
 //                   closes, so fine spheres fill the gaps between coarse ones.
+// Both rules spend their retries (DA: smaller sizes; LA: reopening closed
+// faces near the front) only while the placed volume is behind the target
+// solid fraction of the container volume the front has swept: this keeps the
+// specimen at its target density from the centre out to the walls. A sphere
+// whose Eq. (1) position crosses a wall is moved to touch the wall and two of
+// the face spheres.
 // It ends when all spheres are used or all faces closed. For DA an optional
 // second loop (pore filling, the paper's ref. [32]) revisits the faces that
 // closed without a sphere, with the spheres that are left.
