@@ -61,9 +61,7 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
 
   restart_global = 1;
   restart_peratom = 1;
-  // No create_attribute: LIGGGHTS' first setup calls set_arrays() on every
-  // atom of such fixes, which would wipe the index; new slots are zeroed in
-  // grow_arrays instead.
+  create_attribute = 1;  // atoms created by other commands get index 0
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
@@ -253,6 +251,9 @@ void FixSequentialPack::setup_pre_exchange() {
   if (inserted_) return;  // done before, or restored by read_restart
   insert_specimen();
   inserted_ = 1;
+  // LIGGGHTS' first setup calls set_arrays() on every atom of a fix it
+  // believes just created, which would wipe the indices set above.
+  just_created = 0;
 }
 
 void FixSequentialPack::insert_specimen() {

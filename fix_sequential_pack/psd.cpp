@@ -1,6 +1,7 @@
 #include "psd.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -116,6 +117,11 @@ ParticleSizeDistribution ParticleSizeDistribution::parse(
 
 ParticleSizeDistribution ParticleSizeDistribution::read(
     const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) &&
+      !std::filesystem::is_regular_file(path, ec))
+    throw std::invalid_argument("PSD file '" + path +
+                                "' is not a regular file (a directory?)");
   std::ifstream f(path);
   if (!f)
     throw std::invalid_argument("cannot open PSD file '" + path + "'");
