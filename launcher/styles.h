@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "compute_primary_fabric.h"
 #include "fix_sequential_pack.h"
 
 namespace fabric_styles {
@@ -31,7 +32,8 @@ inline std::vector<std::pair<std::string, FixCreator>> fixes() {
 }
 
 inline std::vector<std::pair<std::string, ComputeCreator>> computes() {
-  return {};
+  return {{"primary/fabric",
+           &make_compute<LAMMPS_NS::ComputePrimaryFabric>}};
 }
 
 }  // namespace fabric_styles

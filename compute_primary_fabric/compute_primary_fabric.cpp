@@ -1,0 +1,529 @@
+/* compute primary/fabric: LIGGGHTS adapter of the fabric core.
+   See compute_primary_fabric.h and docs/compute_primary_fabric.md. */
+
+#include "compute_primary_fabric.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_contact_property_atom.h"
+#include "fix_mesh_surface.h"
+#include "fix_wall_gran.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "pair_gran.h"
+#include "psd.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Global vector: fixed entries, then two per direction bin.
+constexpr int kFixedEntries = 26;
+// Global array: columns per size interval.
+constexpr int kArrayColumns = 8;
+
+}  // namespace
+
+ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
+                                           char **arg)
+    : Compute(lmp, iarg, narg, arg),
+      nintervals_(20),
+      walls_given_(false),
+      pair_(nullptr),
+      intervals_ready_(false),
+      analysed_step_(-1),
+      threshold_force_(0.0),
+      iterations_(0),
+      converged_(true),
+      nmax_(0),
+      peratom_(nullptr),
+      loose_(nullptr) {
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "Compute primary/fabric requires atom_style granular "
+                      "(sphere: radius, rmass)");
+  parse(narg - iarg, arg + iarg);
+  try {
+    fabric::validate(options_);
+  } catch (const std::exception &e) {
+    error->all(FLERR, e.what());
+  }
+  // The pair style must exist now: it creates its contact-force storage in
+  // its own init, which runs before ours.
+  pair_ = dynamic_cast<PairGran *>(force->pair_match("gran", 0));
+  if (!pair_)
+    error->all(FLERR, "Compute primary/fabric needs a granular pair style "
+                      "(pair_style gran ...) defined before it");
+  pair_->do_store_contact_forces();
+
+  peratom_flag = 1;
+  size_peratom_cols = 3;
+  vector_flag = 1;
+  size_vector = kFixedEntries + 2 * options_.direction_bins;
+  extvector = 0;
+  array_flag = 1;
+  size_array_rows = nintervals_;
+  size_array_cols = kArrayColumns;
+  extarray = 0;
+  comm_forward = 1;
+  vector = new double[size_vector]();
+  memory->create(array, size_array_rows, size_array_cols, "primary/fabric:array");
+  for (int r = 0; r < size_array_rows; ++r)
+    for (int c = 0; c < size_array_cols; ++c) array[r][c] = 0.0;
+}
+
+ComputePrimaryFabric::~ComputePrimaryFabric() {
+  delete[] vector;
+  memory->destroy(array);
+  memory->destroy(peratom_);
+  memory->destroy(loose_);
+}
+
+void ComputePrimaryFabric::parse(int narg, char **arg) {
+  // arg points at the first keyword (LIGGGHTS passes iarg past the style).
+  auto fail = [&](const std::string &m) {
+    error->all(FLERR, ("Compute primary/fabric: " + m).c_str());
+  };
+  auto value = [&](int i, const char *what) -> const char * {
+    if (i + 1 >= narg)
+      fail(std::string("keyword '") + arg[i] + "' needs " + what);
+    return arg[i + 1];
+  };
+  auto number = [&](const char *s, const std::string &kw) {
+    char *end = nullptr;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || !std::isfinite(v))
+      fail(kw + " '" + s + "' is not a number");
+    return v;
+  };
+  auto integer = [&](const char *s, const std::string &kw) {
+    char *end = nullptr;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end != '\0') fail(kw + " '" + s + "' is not an integer");
+    return v;
+  };
+  static const char *keywords[] = {"min_contacts", "force_threshold", "prune",
+                                   "intervals", "psd", "walls",
+                                   "direction_bins", "walls_in_fabric",
+                                   "max_iterations"};
+  auto is_keyword = [&](const char *s) {
+    for (const char *k : keywords)
+      if (strcmp(s, k) == 0) return true;
+    return false;
+  };
+  for (int i = 0; i < narg;) {
+    std::string kw = arg[i];
+    if (kw == "min_contacts") {
+      long n = integer(value(i, "an integer >= 1"), kw);
+      if (n < 1) fail("min_contacts " + std::string(arg[i + 1]) +
+                      " must be at least 1");
+      options_.min_contacts = static_cast<int>(n);
+      i += 2;
+    } else if (kw == "force_threshold") {
+      const char *mode = value(i, "'absolute F' or 'relative f'");
+      if (i + 2 >= narg) fail("force_threshold " + std::string(mode) +
+                              " needs a value");
+      double v = number(arg[i + 2], "force_threshold");
+      if (v < 0.0)
+        fail("force_threshold " + std::string(mode) + " " + arg[i + 2] +
+             " must not be negative");
+      if (strcmp(mode, "absolute") == 0)
+        options_.threshold = fabric::LoadThreshold::absolute(v);
+      else if (strcmp(mode, "relative") == 0)
+        options_.threshold = fabric::LoadThreshold::relative(v);
+      else
+        fail("force_threshold mode '" + std::string(mode) +
+             "' is unknown: use absolute or relative");
+      i += 3;
+    } else if (kw == "prune") {
+      const char *p = value(i, "once or iterate");
+      if (strcmp(p, "once") == 0)
+        options_.pruning = fabric::Pruning::once;
+      else if (strcmp(p, "iterate") == 0)
+        options_.pruning = fabric::Pruning::iterate;
+      else
+        fail("prune '" + std::string(p) + "' is unknown: use once or iterate");
+      i += 2;
+    } else if (kw == "intervals") {
+      long n = integer(value(i, "an integer in 1..100"), kw);
+      if (n < 1 || n > 100)
+        fail("intervals " + std::string(arg[i + 1]) + " must lie in 1..100");
+      nintervals_ = static_cast<int>(n);
+      i += 2;
+    } else if (kw == "psd") {
+      psd_file_ = value(i, "a PSD file");
+      i += 2;
+    } else if (kw == "walls") {
+      walls_given_ = true;
+      ++i;
+      while (i < narg && !is_keyword(arg[i])) wall_ids_.push_back(arg[i++]);
+      if (wall_ids_.empty()) fail("keyword 'walls' needs at least one fix ID");
+    } else if (kw == "direction_bins") {
+      long n = integer(value(i, "an integer in 1..90"), kw);
+      if (n < 1 || n > 90)
+        fail("direction_bins " + std::string(arg[i + 1]) + " must lie in 1..90");
+      options_.direction_bins = static_cast<int>(n);
+      i += 2;
+    } else if (kw == "walls_in_fabric") {
+      const char *v = value(i, "yes or no");
+      if (strcmp(v, "yes") != 0 && strcmp(v, "no") != 0)
+        fail("walls_in_fabric '" + std::string(v) + "' must be yes or no");
+      options_.walls_in_fabric = strcmp(v, "yes") == 0;
+      i += 2;
+    } else if (kw == "max_iterations") {
+      long n = integer(value(i, "an integer >= 1"), kw);
+      if (n < 1) fail("max_iterations " + std::string(arg[i + 1]) +
+                      " must be at least 1");
+      options_.max_iterations = static_cast<int>(n);
+      i += 2;
+    } else {
+      fail("unknown keyword '" + kw + "': allowed are min_contacts "
+           "force_threshold prune intervals psd walls direction_bins "
+           "walls_in_fabric max_iterations");
+    }
+  }
+  if (!psd_file_.empty()) {
+    try {
+      auto psd = fabric::ParticleSizeDistribution::read(psd_file_);
+      for (const auto &iv : psd.equal_mass_intervals(nintervals_)) {
+        class_diameter_.push_back(iv.d_mean);
+        class_lower_.push_back(iv.d_lower);
+        class_upper_.push_back(iv.d_upper);
+      }
+    } catch (const std::exception &e) {
+      fail(e.what());
+    }
+    intervals_ready_ = true;
+  }
+}
+
+void ComputePrimaryFabric::init() {
+  if (force->pair != pair_ && force->pair_match("gran", 0) != pair_)
+    error->all(FLERR, "Compute primary/fabric: the granular pair style was "
+                      "replaced after the compute was defined; define the "
+                      "compute again");
+  if (force->newton_pair)
+    error->all(FLERR, "Compute primary/fabric requires 'newton off' (each "
+                      "rank must see both ends of its atoms' contacts)");
+  find_walls();
+}
+
+void ComputePrimaryFabric::find_walls() {
+  wall_contacts_.clear();
+  for (const std::string &id : wall_ids_) {
+    int i = modify->find_fix(const_cast<char *>(id.c_str()));
+    if (i < 0)
+      error->all(FLERR, ("Compute primary/fabric: wall fix ID '" + id +
+                         "' does not exist").c_str());
+    if (strncmp(modify->fix[i]->style, "wall/gran", 9) != 0)
+      error->all(FLERR, ("Compute primary/fabric: fix '" + id + "' is style " +
+                         modify->fix[i]->style +
+                         ", not a granular wall (wall/gran)").c_str());
+  }
+  for (int i = 0; i < modify->nfix; ++i) {
+    Fix *f = modify->fix[i];
+    if (strncmp(f->style, "wall/gran", 9) != 0) continue;
+    if (walls_given_ && std::find(wall_ids_.begin(), wall_ids_.end(),
+                                  std::string(f->id)) == wall_ids_.end())
+      continue;
+    FixWallGran *w = static_cast<FixWallGran *>(f);
+    if (!w->store_force_contact())
+      error->all(FLERR, ("Compute primary/fabric: wall fix '" +
+                         std::string(f->id) + "' does not store its contacts: "
+                         "add 'store_force_contact yes' to it (or leave it out "
+                         "with the compute's 'walls' keyword)").c_str());
+    if (w->is_mesh_wall()) {
+      for (int m = 0; m < w->n_meshes(); ++m) {
+        FixContactPropertyAtom *c = w->mesh_list()[m]->meshforceContact();
+        if (c) wall_contacts_.push_back(c);
+      }
+    } else {
+      std::string cid = std::string("contactforces_") + f->id;
+      Fix *c = modify->find_fix_id(const_cast<char *>(cid.c_str()));
+      if (c) wall_contacts_.push_back(static_cast<FixContactPropertyAtom *>(c));
+    }
+  }
+}
+
+int ComputePrimaryFabric::interval_of(double d) const {
+  if (!class_upper_.empty()) {  // a PSD: intervals by their diameter bounds
+    const double tol = 1e-6;
+    if (d < class_lower_.front() * (1 - tol) || d > class_upper_.back() * (1 + tol))
+      return -1;
+    auto it = std::lower_bound(class_upper_.begin(), class_upper_.end(),
+                               d * (1 - 1e-12));
+    return std::min<int>(it - class_upper_.begin(), nintervals_ - 1);
+  }
+  // The specimen's own sizes: the nearest, to a relative 1e-9.
+  auto it = std::lower_bound(class_diameter_.begin(), class_diameter_.end(), d);
+  int k = static_cast<int>(it - class_diameter_.begin());
+  for (int c : {k - 1, k})
+    if (c >= 0 && c < (int)class_diameter_.size() &&
+        std::abs(class_diameter_[c] - d) <= 1e-9 * d)
+      return c;
+  return -1;
+}
+
+// Without a PSD the size intervals are the specimen's distinct diameters
+// (fix sequential/pack gives one diameter per interval).
+void ComputePrimaryFabric::assign_intervals() {
+  std::vector<double> mine;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (atom->mask[i] & groupbit) mine.push_back(2.0 * atom->radius[i]);
+  std::sort(mine.begin(), mine.end());
+  std::vector<double> uniq;
+  for (double d : mine)
+    if (uniq.empty() || d > uniq.back() * (1 + 1e-9)) uniq.push_back(d);
+  if (uniq.size() > 1000) uniq.resize(1001);  // more than any interval count
+  int n = static_cast<int>(uniq.size());
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < comm->nprocs; ++p) displs[p] = total, total += counts[p];
+  if (total == 0) return;  // no particles yet
+  std::vector<double> all(total);
+  MPI_Allgatherv(uniq.data(), n, MPI_DOUBLE, all.data(), counts.data(),
+                 displs.data(), MPI_DOUBLE, world);
+  std::sort(all.begin(), all.end());
+  class_diameter_.clear();
+  for (double d : all)
+    if (class_diameter_.empty() || d > class_diameter_.back() * (1 + 1e-9))
+      class_diameter_.push_back(d);
+  if ((int)class_diameter_.size() != nintervals_) {
+    char m[512];
+    snprintf(m, sizeof m,
+             "Compute primary/fabric: the group has %s%d distinct particle "
+             "diameters but intervals %d: use intervals %d, or 'psd FILE "
+             "intervals N' to class a continuous size distribution",
+             class_diameter_.size() > 1000 ? "more than " : "",
+             std::min<int>(class_diameter_.size(), 1000), nintervals_,
+             std::min<int>(class_diameter_.size(), 100));
+    error->all(FLERR, m);
+  }
+  intervals_ready_ = true;
+}
+
+void ComputePrimaryFabric::analyse() {
+  if (analysed_step_ == update->ntimestep) return;
+  analysed_step_ = update->ntimestep;
+  if (!intervals_ready_) assign_intervals();
+
+  if (atom->nmax > nmax_) {
+    memory->destroy(peratom_);
+    memory->destroy(loose_);
+    nmax_ = atom->nmax;
+    memory->create(peratom_, nmax_, 3, "primary/fabric:peratom");
+    memory->create(loose_, nmax_, "primary/fabric:loose");
+    array_atom = peratom_;
+  }
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double **x = atom->x;
+
+  // The particles of this rank's group.
+  std::vector<int> index(nlocal, -1);
+  std::vector<fabric::Particle> particles;
+  long long outside = 0;
+  double outside_d = 0.0;
+  for (int i = 0; i < nlocal; ++i) {
+    peratom_[i][0] = peratom_[i][1] = peratom_[i][2] = 0.0;
+    if (!(atom->mask[i] & groupbit)) continue;
+    int k = intervals_ready_ ? interval_of(2.0 * atom->radius[i]) : 0;
+    if (k < 0) {
+      ++outside;
+      outside_d = 2.0 * atom->radius[i];
+      continue;
+    }
+    index[i] = static_cast<int>(particles.size());
+    particles.push_back({static_cast<long long>(atom->tag[i]), atom->radius[i],
+                         atom->rmass[i], k});
+  }
+  long long outside_all = 0;
+  MPI_Allreduce(&outside, &outside_all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (outside_all > 0) {
+    double d = 0.0;
+    MPI_Allreduce(&outside_d, &d, 1, MPI_DOUBLE, MPI_MAX, world);
+    char m[512];
+    snprintf(m, sizeof m,
+             "Compute primary/fabric: %lld particles (e.g. diameter %g) fit no "
+             "size interval of %s: the PSD or intervals setting does not "
+             "match the specimen",
+             outside_all, d,
+             psd_file_.empty() ? "the specimen's sizes" : psd_file_.c_str());
+    error->all(FLERR, m);
+  }
+
+  // Each owned particle's contact ends: both ends of every contact live on
+  // the ranks that own them (newton off), so each end is passed as a half.
+  FixContactPropertyAtom *cf = pair_->fix_contact_forces();
+  if (!cf)
+    error->all(FLERR, "Compute primary/fabric: the pair style stores no "
+                      "contact forces (is the compute defined after the "
+                      "pair style?)");
+  std::vector<fabric::ParticleContact> contacts;
+  std::vector<int> partner;  // local or ghost index of each contact's partner
+  std::vector<fabric::WallContact> walls;
+  for (int i = 0; i < nlocal; ++i) {
+    if (index[i] < 0) continue;
+    for (int k = 0; k < cf->n_partner(i); ++k) {
+      int j = atom->map(cf->partner(i, k));
+      if (j < 0) continue;  // not within reach: no longer in contact
+      const double *F = cf->contacthistory(i, k);
+      Eigen::Vector3d d(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
+      double dist = d.norm();
+      if (!(dist > 0.0)) continue;
+      fabric::ParticleContact c;
+      c.i = index[i];
+      c.normal = -d / dist;  // branch i -> j
+      c.normal_force = (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]) / dist;
+      c.complete = false;
+      contacts.push_back(c);
+      partner.push_back(j);
+    }
+    for (FixContactPropertyAtom *w : wall_contacts_)
+      for (int k = 0; k < w->n_partner(i); ++k) {
+        const double *F = w->contacthistory(i, k);
+        Eigen::Vector3d f(F[0], F[1], F[2]);
+        double magnitude = f.norm();
+        // A wall's stored force is the whole contact force; its magnitude
+        // stands for the normal force (they differ by at most sqrt(1+mu^2)).
+        walls.push_back({index[i], magnitude,
+                         magnitude > 0 ? Eigen::Vector3d(f / magnitude)
+                                       : Eigen::Vector3d(0, 0, 1)});
+      }
+  }
+
+  try {
+    auto local = fabric::normal_force_sums(contacts, walls);
+    fabric::NormalForceSums global;
+    MPI_Allreduce(local.values.data(), global.values.data(), 2, MPI_DOUBLE,
+                  MPI_SUM, world);
+    threshold_force_ = options_.threshold.force(global.mean());
+
+    fabric::Options once = options_;
+    once.pruning = fabric::Pruning::once;
+    const int n = static_cast<int>(particles.size());
+    fabric::Classification cls = fabric::classify(n, contacts, walls,
+                                                  threshold_force_, once);
+    const std::vector<int> raw_contacts = cls.loaded_contacts;
+    iterations_ = 0;
+    converged_ = true;
+    if (options_.pruning == fabric::Pruning::iterate) {
+      // Remove the loose particles and recount their neighbours until
+      // nothing changes; partners' classes cross ranks by forward comm.
+      for (;;) {
+        for (int i = 0; i < nall; ++i) loose_[i] = 0.0;
+        for (int i = 0; i < nlocal; ++i)
+          if (index[i] >= 0 && cls.fraction[index[i]] == fabric::Fraction::loose)
+            loose_[i] = 1.0;
+        comm->forward_comm_compute(this);
+        std::vector<fabric::ParticleContact> kept;
+        for (size_t c = 0; c < contacts.size(); ++c)
+          if (loose_[partner[c]] == 0.0) kept.push_back(contacts[c]);
+        auto next = fabric::classify(n, kept, walls, threshold_force_, once);
+        long long changed = 0, changed_all = 0;
+        for (int p = 0; p < n; ++p)
+          if (next.fraction[p] != cls.fraction[p]) ++changed;
+        MPI_Allreduce(&changed, &changed_all, 1, MPI_LONG_LONG, MPI_SUM, world);
+        cls.fraction = next.fraction;
+        if (changed_all == 0) break;
+        if (++iterations_ >= options_.max_iterations) {
+          converged_ = false;
+          if (comm->me == 0)
+            error->warning(FLERR, "Compute primary/fabric: prune iterate did "
+                                  "not converge within max_iterations");
+          break;
+        }
+      }
+      cls.loaded_contacts = raw_contacts;
+      cls.iterations = iterations_;
+      cls.converged = converged_;
+    }
+
+    fabric::FabricSums sums = fabric::accumulate(
+        particles, contacts, walls, cls, threshold_force_, nintervals_, options_);
+    fabric::FabricSums total(nintervals_, options_.direction_bins);
+    MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
+                  world);
+    summary_ = fabric::finalise(total, class_diameter_);
+
+    for (int i = 0; i < nlocal; ++i) {
+      if (index[i] < 0) continue;
+      int p = index[i];
+      peratom_[i][0] = raw_contacts[p];
+      peratom_[i][1] = cls.fraction[p] == fabric::Fraction::primary ? 1.0 : 0.0;
+      peratom_[i][2] = particles[p].interval + 1;
+    }
+  } catch (const std::exception &e) {
+    error->one(FLERR, e.what());
+  }
+}
+
+void ComputePrimaryFabric::compute_peratom() {
+  invoked_peratom = update->ntimestep;
+  analyse();
+}
+
+void ComputePrimaryFabric::compute_vector() {
+  invoked_vector = update->ntimestep;
+  analyse();
+  const fabric::FabricSummary &s = summary_;
+  const auto &oz = s.overlapping_zone;
+  double v[kFixedEntries] = {
+      s.particles, s.loose_particles, s.loose_percent_by_number,
+      s.primary_percent_by_mass, s.coordination, s.primary_coordination,
+      0.5 * oz.r1, 0.5 * oz.r2, oz.mass_percent, s.contacts, s.loaded_contacts,
+      s.mean_normal_force, threshold_force_, double(iterations_),
+      s.fabric_tensor(0, 0), s.fabric_tensor(1, 1), s.fabric_tensor(2, 2),
+      s.fabric_tensor(0, 1), s.fabric_tensor(0, 2), s.fabric_tensor(1, 2),
+      s.force_fabric_tensor(0, 0), s.force_fabric_tensor(1, 1),
+      s.force_fabric_tensor(2, 2), s.force_fabric_tensor(0, 1),
+      s.force_fabric_tensor(0, 2), s.force_fabric_tensor(1, 2)};
+  std::copy(v, v + kFixedEntries, vector);
+  for (int b = 0; b < options_.direction_bins; ++b) {
+    double frac = 0.0, force_mean = 0.0;
+    if (b < (int)s.directions.size()) {
+      frac = s.directions[b].contact_fraction;
+      force_mean = s.directions[b].mean_normal_force;
+    }
+    vector[kFixedEntries + 2 * b] = frac;
+    vector[kFixedEntries + 2 * b + 1] = force_mean;
+  }
+}
+
+void ComputePrimaryFabric::compute_array() {
+  invoked_array = update->ntimestep;
+  analyse();
+  for (int k = 0; k < nintervals_; ++k) {
+    fabric::IntervalSummary r;
+    if (k < (int)summary_.intervals.size()) r = summary_.intervals[k];
+    double row[kArrayColumns] = {
+        r.diameter, r.mass_percent, r.primary_percent_of_interval,
+        r.loose_mass_percent, r.loaded_contacts_per_particle,
+        r.normal_force_per_loaded_contact, r.primary_mass_percent, r.particles};
+    std::copy(row, row + kArrayColumns, array[k]);
+  }
+}
+
+int ComputePrimaryFabric::pack_comm(int n, int *list, double *buf, int, int *) {
+  for (int i = 0; i < n; ++i) buf[i] = loose_[list[i]];
+  return n;
+}
+
+void ComputePrimaryFabric::unpack_comm(int n, int first, double *buf) {
+  for (int i = 0; i < n; ++i) loose_[first + i] = buf[i];
+}
+
+double ComputePrimaryFabric::memory_usage() {
+  return static_cast<double>(nmax_) * 4 * sizeof(double);
+}

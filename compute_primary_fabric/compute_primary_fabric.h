@@ -1,0 +1,70 @@
+/* compute primary/fabric: which particles carry the load (the primary
+   fabric) and which lie loose, after Galindo-Torres & Scheuermann (see
+   docs/compute_primary_fabric.md). A thin adapter: the classification and
+   all sums live in fabric_analysis.* (no LIGGGHTS include); this class
+   collects each owned particle's contacts from the granular pair style and
+   the granular walls, feeds them to the core and reduces the sums with MPI. */
+
+#ifdef COMPUTE_CLASS
+
+ComputeStyle(primary/fabric,ComputePrimaryFabric)
+
+#else
+
+#ifndef LMP_COMPUTE_PRIMARY_FABRIC_H
+#define LMP_COMPUTE_PRIMARY_FABRIC_H
+
+#include <string>
+#include <vector>
+
+#include "compute.h"
+#include "fabric_analysis.h"
+
+namespace LAMMPS_NS {
+
+class ComputePrimaryFabric : public Compute {
+ public:
+  ComputePrimaryFabric(class LAMMPS *, int, int, char **);
+  ~ComputePrimaryFabric();
+  void init();
+  void compute_peratom();
+  void compute_vector();
+  void compute_array();
+  int pack_comm(int, int *, double *, int, int *);
+  void unpack_comm(int, int, double *);
+  double memory_usage();
+
+ private:
+  void parse(int narg, char **arg);
+  void find_walls();
+  void analyse();      // once per step: classification and sums
+  void assign_intervals();
+  int interval_of(double diameter) const;
+
+  fabric::Options options_;
+  int nintervals_;
+  std::string psd_file_;
+  std::vector<std::string> wall_ids_;  // empty: every granular wall
+  bool walls_given_;
+
+  class PairGran *pair_;
+  std::vector<class FixContactPropertyAtom *> wall_contacts_;
+  std::vector<double> class_diameter_;  // representative, finest first
+  std::vector<double> class_lower_, class_upper_;  // PSD bounds (psd mode)
+  bool intervals_ready_;
+
+  bigint analysed_step_;
+  fabric::FabricSummary summary_;
+  double threshold_force_;
+  int iterations_;
+  bool converged_;
+
+  int nmax_;
+  double **peratom_;  // loaded contacts, class, interval
+  double *loose_;     // for the forward communication in prune iterate
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
