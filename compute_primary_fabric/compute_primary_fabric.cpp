@@ -517,7 +517,7 @@ void ComputePrimaryFabric::compute_array() {
 
 int ComputePrimaryFabric::pack_comm(int n, int *list, double *buf, int, int *) {
   for (int i = 0; i < n; ++i) buf[i] = loose_[list[i]];
-  return n;
+  return 1;  // values per atom: this Comm multiplies by the atom count
 }
 
 void ComputePrimaryFabric::unpack_comm(int n, int first, double *buf) {
