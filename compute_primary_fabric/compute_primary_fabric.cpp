@@ -13,6 +13,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_contact_property_atom.h"
 #include "fix_mesh_surface.h"
@@ -216,7 +217,15 @@ void ComputePrimaryFabric::init() {
   if (force->newton_pair)
     error->all(FLERR, "Compute primary/fabric requires 'newton off' (each "
                       "rank must see both ends of its atoms' contacts)");
+  if (!atom->map_style)
+    error->all(FLERR, "Compute primary/fabric requires 'atom_modify map "
+                      "array' (or hash) to find contact partners by ID");
+  if (pair_->storeContactForcesEvery() != 1)
+    error->all(FLERR, "Compute primary/fabric needs the pair style's contact "
+                      "forces on every step");
   find_walls();
+  analysed_step_ = -1;  // a new run: atoms may have moved on this same step
+  warned_ = false;
 }
 
 void ComputePrimaryFabric::find_walls() {
@@ -238,6 +247,11 @@ void ComputePrimaryFabric::find_walls() {
                                   std::string(f->id)) == wall_ids_.end())
       continue;
     FixWallGran *w = static_cast<FixWallGran *>(f);
+    if (w->store_force_contact() && w->store_force_contact_every() != 1)
+      error->all(FLERR, ("Compute primary/fabric: wall fix '" +
+                         std::string(f->id) + "' stores its contacts only every " +
+                         std::to_string(w->store_force_contact_every()) +
+                         " steps; remove store_force_contact_every").c_str());
     if (!w->store_force_contact())
       error->all(FLERR, ("Compute primary/fabric: wall fix '" +
                          std::string(f->id) + "' does not store its contacts: "
@@ -309,6 +323,13 @@ void ComputePrimaryFabric::assign_intervals() {
              class_diameter_.size() > 1000 ? "more than " : "",
              std::min<int>(class_diameter_.size(), 1000), nintervals_,
              std::min<int>(class_diameter_.size(), 100));
+    if (class_diameter_.size() > 100)
+      snprintf(m, sizeof m,
+               "Compute primary/fabric: the group has %s%d distinct particle "
+               "diameters, more than 100 intervals can hold: use 'psd FILE "
+               "intervals N' to class a continuous size distribution",
+               class_diameter_.size() > 1000 ? "more than " : "",
+               std::min<int>(class_diameter_.size(), 1000));
     error->all(FLERR, m);
   }
   intervals_ready_ = true;
@@ -378,6 +399,7 @@ void ComputePrimaryFabric::analyse() {
     for (int k = 0; k < cf->n_partner(i); ++k) {
       int j = atom->map(cf->partner(i, k));
       if (j < 0) continue;  // not within reach: no longer in contact
+      j = domain->closest_image(i, j);  // the image across a periodic side
       const double *F = cf->contacthistory(i, k);
       Eigen::Vector3d d(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
       double dist = d.norm();
@@ -439,9 +461,10 @@ void ComputePrimaryFabric::analyse() {
         if (changed_all == 0) break;
         if (++iterations_ >= options_.max_iterations) {
           converged_ = false;
-          if (comm->me == 0)
+          if (comm->me == 0 && !warned_)
             error->warning(FLERR, "Compute primary/fabric: prune iterate did "
                                   "not converge within max_iterations");
+          warned_ = true;
           break;
         }
       }

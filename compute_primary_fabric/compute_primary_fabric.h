@@ -58,6 +58,7 @@ class ComputePrimaryFabric : public Compute {
   double threshold_force_;
   int iterations_;
   bool converged_;
+  bool warned_ = false;
 
   int nmax_;
   double **peratom_;  // loaded contacts, class, interval
