@@ -27,7 +27,7 @@ SIDE=${SIDE:-5.3}
 DMAX=${DMAX:-1.75e-3}
 PLAIN_CHUNKS=${PLAIN_CHUNKS:-30}
 S0=0.70
-OUT=${1:-/tmp/route/run}
+OUT=${1:-out/route/run}
 mkdir -p "$OUT/sequential" "$OUT/liggghts" "$OUT/liggghts_plain"
 
 L=$(python3 -c "print('%.10g' % ($SIDE*$DMAX))")
