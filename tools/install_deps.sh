@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(liggghts libliggghts-dev liggghts-doc libopenmpi-dev openmpi-bin
           libeigen3-dev libgtest-dev cmake g++ make python3-numpy
-          python3-matplotlib)
+          python3-matplotlib xvfb)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

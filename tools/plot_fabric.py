@@ -1,0 +1,593 @@
+#!/usr/bin/python3
+"""Draw the primary-fabric figures of Galindo-Torres & Scheuermann (Figs.
+11-19) as PNG files from one or more output folders of
+input_scripts/in.oedometer, overlaid like the paper's LA vs DA curves.
+
+    tools/plot_fabric.py OUTDIR [OUTDIR2 ...] [--labels DA LA ...]
+                         [--png-dir DIR] [--dt SECONDS]
+
+Reads from each OUTDIR
+  fabric_series.txt     (required) time series: Figs. 11, 12
+  fabric_intervals.txt  (required) per-interval table, last block: Figs. 13,
+                        14, 17/18, 19
+  fabric_global.txt     (optional) the compute's global vector: r1, r2
+                        (entries 7-8, radii), the direction bins (27...)
+  contacts_*.vtp        (optional) the force network, used for the direction
+                        histogram when fabric_global.txt does not hold the
+                        global vector (see below)
+  log*/*.log            (optional) a LIGGGHTS log with the in.oedometer line
+                        "TIMESTEP: ... dt = X s", to plot against time
+
+Writes into --png-dir (default: OUTDIR for one run; for several, the folder
+fabric_plots beside the first OUTDIR, e.g. out/fabric_plots) and prints the
+path of every PNG written:
+  fig11_loose_number.png        loose particles, % by number, vs time/step
+  fig12_primary_mass.png        primary fabric, % by mass, vs time/step
+  fig13_contacts_per_particle.png   loaded contacts per particle per interval
+  fig14_force_per_contact.png   mean normal force per loaded contact
+  fig17_18_distributions.png    cumulative PSD, PFD and LPD vs diameter (log),
+                                overlapping zone shaded; one panel per run
+  fig19_primary_of_interval.png primary % of each interval's own mass
+  fig15_16_direction_rose.png   contact fraction and mean normal force by
+                                polar angle from z (2-D rose)
+
+fabric_global.txt: LIGGGHTS 3.8's fix ave/time, in mode vector, replaces a
+bare c_ID whose compute also has a global array by the array's columns
+(fix_ave_time.cpp), so "fix ave/time ... c_pf mode vector" writes the
+per-interval array again, not the global vector. The tool recognises both:
+a block of one-value rows, or a single row of >= 26 values (scalar mode,
+c_pf[1] ... c_pf[44]), is the global vector; an 8-column block is the array.
+Without the vector, r1/r2 are found from fabric_intervals.txt by their
+definition (finest interval with primary mass, coarsest with loose mass,
+half its diameter) and the direction histogram is recomputed from the last
+contacts_*.vtp: particle contacts only (the compute's default
+walls_in_fabric no), loaded if the normal force exceeds 1e-3 of the mean
+normal force of these contacts (the compute's default relative threshold,
+whose mean also includes wall contacts), 9 bins of 10 degrees.
+
+Exit status: 0 on success; 2 on a usage error or when a required file is
+missing or empty (nothing is drawn then).
+"""
+import argparse
+import glob
+import math
+import os
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter  # noqa: E402
+import numpy as np  # noqa: E402
+
+PROG = "plot_fabric.py"
+
+SERIES_COLS = ["step", "KE(J)", "sigma_lid(Pa)", "loose%number",
+               "primary%mass", "coordination", "OZ%mass"]
+INTERVAL_COLS = ["row", "diameter(m)", "mass%", "primary%ofinterval",
+                 "loose%mass", "contacts/particle", "force/contact(N)",
+                 "primary%mass", "particles"]
+N_VECTOR_FIXED = 26          # entries before the direction bins
+
+
+class InputError(Exception):
+    pass
+
+
+def warn(msg):
+    print(PROG + ": warning: " + msg, file=sys.stderr)
+
+
+# ---------------------------------------------------------------- reading
+def _title_columns(path):
+    """Column names from the '# step ...' / '# row ...' title line, if any."""
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            words = line[1:].split()
+            if words and words[0].lower() in ("step", "row", "timestep"):
+                if words[0] == "TimeStep":
+                    continue
+                return words
+    return None
+
+
+def _data_lines(path):
+    with open(path) as f:
+        for line in f:
+            s = line.strip()
+            if s and not s.startswith("#"):
+                yield s.split()
+
+
+def read_series(path):
+    """fix ave/time scalar-mode file -> dict name -> 1-D array."""
+    names = _title_columns(path) or SERIES_COLS
+    rows = []
+    for w in _data_lines(path):
+        try:
+            rows.append([float(x) for x in w])
+        except ValueError:
+            raise InputError("%s: cannot read the line '%s'" % (path, " ".join(w)))
+    if not rows:
+        raise InputError("%s: no data rows (the run wrote no output step yet)" % path)
+    ncol = min(len(r) for r in rows)
+    data = np.array([r[:ncol] for r in rows])
+    if len(names) < ncol:
+        names = names + SERIES_COLS[len(names):ncol]
+    return {names[i]: data[:, i] for i in range(ncol)}
+
+
+def read_blocks(path):
+    """fix ave/time mode-vector file -> list of (step, 2-D array).
+    An incomplete last block (a run still writing) is dropped."""
+    lines = list(_data_lines(path))
+    blocks = []
+    i = 0
+    while i < len(lines):
+        w = lines[i]
+        if len(w) != 2:
+            raise InputError("%s: expected a block header 'step nrows', got '%s'"
+                             % (path, " ".join(w)))
+        step, nrows = int(float(w[0])), int(float(w[1]))
+        rows = lines[i + 1:i + 1 + nrows]
+        if len(rows) < nrows:
+            warn("%s: last block (step %d) is incomplete, ignored" % (path, step))
+            break
+        ncol = min(len(r) for r in rows) if rows else 0
+        arr = np.array([[float(x) for x in r[:ncol]] for r in rows]) if rows \
+            else np.zeros((0, 0))
+        blocks.append((step, arr))
+        i += 1 + nrows
+    return blocks
+
+
+def read_intervals(path):
+    blocks = read_blocks(path)
+    if not blocks:
+        raise InputError("%s: no data block (the final analysis has not run yet)" % path)
+    step, arr = blocks[-1]
+    if arr.ndim != 2 or arr.shape[0] == 0 or arr.shape[1] < 9:
+        raise InputError("%s: the last block (step %d) does not have the 9 columns %s"
+                         % (path, step, " ".join(INTERVAL_COLS)))
+    names = _title_columns(path)
+    if not names or len(names) < 9:
+        names = INTERVAL_COLS
+    d = {names[i]: arr[:, i] for i in range(9)}
+    d["step"] = step
+    d["nblocks"] = len(blocks)
+    return d
+
+
+def read_global_vector(path):
+    """The compute's global vector, or None if the file holds something else."""
+    lines = list(_data_lines(path))
+    if not lines:
+        return None
+    if len(lines[0]) >= 1 + N_VECTOR_FIXED:          # scalar mode: step v1 v2 ...
+        return np.array([float(x) for x in lines[-1][1:]])
+    blocks = read_blocks(path)
+    if not blocks:
+        return None
+    step, arr = blocks[-1]
+    if arr.ndim == 2 and arr.shape[1] == 2 and arr.shape[0] >= N_VECTOR_FIXED:
+        return arr[:, 1].copy()
+    return None
+
+
+def read_vtp_contacts(path):
+    """contacts_*.vtp of dump local/gran/vtk (ascii) -> x1, x2, force (n x 3)."""
+    root = ET.parse(path).getroot()
+    piece = root.find("PolyData/Piece")
+    if piece is None:
+        raise InputError("%s: no PolyData piece" % path)
+
+    def arr(parent, name):
+        if parent is None:
+            return None
+        for da in parent.findall("DataArray"):
+            if da.get("Name") == name:
+                if da.get("format", "ascii") != "ascii":
+                    raise InputError("%s: array %s is not ascii" % (path, name))
+                nc = int(da.get("NumberOfComponents", "1"))
+                v = np.array((da.text or "").split(), dtype=float)
+                return v.reshape(-1, nc) if nc > 1 else v
+        return None
+
+    nlines = int(piece.get("NumberOfLines", "0"))
+    if nlines == 0:
+        return np.zeros((0, 3)), np.zeros((0, 3)), np.zeros((0, 3))
+    pts = arr(piece.find("Points"), "Points").reshape(-1, 3)
+    conn = arr(piece.find("Lines"), "connectivity").astype(int)
+    offs = arr(piece.find("Lines"), "offsets").astype(int)
+    force = arr(piece.find("CellData"), "force")
+    if force is None:
+        raise InputError("%s: no cell array 'force'" % path)
+    starts = np.concatenate(([0], offs[:-1]))
+    return pts[conn[starts]], pts[conn[starts + 1]], force.reshape(-1, 3)
+
+
+def find_dt(outdir):
+    pat = re.compile(r"TIMESTEP:.*dt = ([0-9.eE+-]+) s")
+    for f in sorted(glob.glob(os.path.join(outdir, "log*")) +
+                    glob.glob(os.path.join(outdir, "*.log"))):
+        try:
+            with open(f, errors="replace") as fh:
+                for line in fh:
+                    m = pat.search(line)
+                    if m:
+                        return float(m.group(1))
+        except OSError:
+            pass
+    return None
+
+
+def last_numbered(outdir, pattern):
+    files = glob.glob(os.path.join(outdir, pattern))
+    num = []
+    for f in files:
+        m = re.search(r"_(\d+)\.[a-z]+$", os.path.basename(f))
+        if m:
+            num.append((int(m.group(1)), f))
+    return max(num)[1] if num else None
+
+
+# ---------------------------------------------------------------- analysis
+def overlap_from_intervals(iv):
+    """r1, r2 (radii) and OZ % by the compute's definition."""
+    d = iv["diameter(m)"]
+    prim = iv["primary%mass"]
+    loose = iv["loose%mass"]
+    kp = np.nonzero(prim > 0)[0]
+    kl = np.nonzero(loose > 0)[0]
+    r1 = 0.5 * d[kp[0]] if len(kp) else 0.0
+    r2 = 0.5 * d[kl[-1]] if len(kl) else 0.0
+    oz = 0.0
+    if len(kp) and len(kl) and kl[-1] >= kp[0]:
+        oz = float(np.sum(iv["mass%"][kp[0]:kl[-1] + 1]))
+    return r1, r2, oz
+
+
+def directions_from_contacts(x1, x2, force, nbins=9, rel_threshold=1e-3):
+    """Direction histogram and fabric tensors of the loaded particle contacts."""
+    out = {"fraction": np.zeros(nbins), "force": np.zeros(nbins),
+           "F": np.zeros(6), "Phi": np.zeros(6), "nloaded": 0}
+    if len(x1) == 0:
+        return out
+    b = x1 - x2
+    length = np.linalg.norm(b, axis=1)
+    ok = length > 0
+    n = b[ok] / length[ok, None]
+    fn = np.einsum("ij,ij->i", force[ok], n)
+    # the sign convention (force on particle 1 or 2) is fixed by the majority:
+    # in a compressed packing most contacts push their particles apart
+    if np.sum(fn[fn > 0]) < -np.sum(fn[fn < 0]):
+        fn = -fn
+    ft = max(0.0, rel_threshold * float(np.mean(fn)))
+    loaded = fn > ft
+    n, fn = n[loaded], fn[loaded]
+    out["nloaded"] = int(loaded.sum())
+    if out["nloaded"] == 0:
+        return out
+    theta = np.degrees(np.arccos(np.clip(np.abs(n[:, 2]), 0.0, 1.0)))
+    k = np.minimum((theta / (90.0 / nbins)).astype(int), nbins - 1)
+    for j in range(nbins):
+        sel = k == j
+        out["fraction"][j] = sel.sum() / float(len(k))
+        out["force"][j] = fn[sel].mean() if sel.any() else 0.0
+    pairs = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)]
+    out["F"] = np.array([np.mean(n[:, a] * n[:, c]) for a, c in pairs])
+    out["Phi"] = np.array([np.sum(fn * n[:, a] * n[:, c]) / np.sum(fn) for a, c in pairs])
+    return out
+
+
+# ---------------------------------------------------------------- a run
+class Run:
+    def __init__(self, outdir, label, dt_cli):
+        self.dir = outdir
+        self.label = label
+        self.notes = []
+        self.series = read_series(os.path.join(outdir, "fabric_series.txt"))
+        self.iv = read_intervals(os.path.join(outdir, "fabric_intervals.txt"))
+        self.dt = dt_cli if dt_cli else find_dt(outdir)
+
+        self.vector = None
+        gpath = os.path.join(outdir, "fabric_global.txt")
+        if os.path.isfile(gpath):
+            try:
+                self.vector = read_global_vector(gpath)
+            except InputError as e:
+                warn(str(e))
+            if self.vector is None:
+                warn("%s holds the per-interval array, not the compute's global "
+                     "vector (LIGGGHTS 3.8 fix ave/time expands a bare c_pf in "
+                     "mode vector into the array's columns); r1/r2 come from "
+                     "fabric_intervals.txt, the direction histogram from "
+                     "contacts_*.vtp" % gpath)
+        else:
+            warn("%s: not found; r1/r2 come from fabric_intervals.txt, the "
+                 "direction histogram from contacts_*.vtp" % gpath)
+
+        if self.vector is not None and len(self.vector) >= 9:
+            self.r1, self.r2, self.oz = (float(self.vector[6]), float(self.vector[7]),
+                                         float(self.vector[8]))
+            self.oz_source = "fabric_global.txt"
+        else:
+            self.r1, self.r2, self.oz = overlap_from_intervals(self.iv)
+            self.oz_source = "fabric_intervals.txt"
+
+        self.dirs = None
+        if self.vector is not None and len(self.vector) >= N_VECTOR_FIXED + 2:
+            v = self.vector
+            m = (len(v) - N_VECTOR_FIXED) // 2
+            bins = v[N_VECTOR_FIXED:N_VECTOR_FIXED + 2 * m].reshape(m, 2)
+            self.dirs = {"fraction": bins[:, 0], "force": bins[:, 1],
+                         "F": v[14:20], "Phi": v[20:26],
+                         "nloaded": int(v[10]), "source": "fabric_global.txt"}
+        else:
+            vtp = last_numbered(outdir, "contacts_*.vtp")
+            if vtp is None:
+                warn("%s: no contacts_*.vtp; no direction histogram for this run" % outdir)
+            else:
+                try:
+                    x1, x2, f = read_vtp_contacts(vtp)
+                    self.dirs = directions_from_contacts(x1, x2, f)
+                    self.dirs["source"] = os.path.basename(vtp) + " (recomputed)"
+                except (InputError, ET.ParseError, ValueError) as e:
+                    warn("%s: %s; no direction histogram for this run" % (vtp, e))
+
+    def x_time(self, use_time):
+        step = self.series["step"]
+        if use_time:
+            return step * self.dt * 1e3, "time (ms)"
+        return step, "step"
+
+
+# ---------------------------------------------------------------- figures
+COLORS = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
+
+
+def style(i):
+    return dict(color=COLORS[i % len(COLORS)], marker=MARKERS[i % len(MARKERS)])
+
+
+def save(fig, pngdir, name, written):
+    path = os.path.join(pngdir, name)
+    fig.savefig(path, dpi=130, bbox_inches="tight")
+    plt.close(fig)
+    written.append(path)
+
+
+def fig_series(runs, key, ylabel, title, name, pngdir, written):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    use_time = all(r.dt for r in runs)     # one axis for all: time only if all know dt
+    for i, r in enumerate(runs):
+        x, xl = r.x_time(use_time)
+        y = r.series.get(key)
+        if y is None:
+            warn("%s: fabric_series.txt has no column %s" % (r.dir, key))
+            continue
+        ax.plot(x, y, ms=4, lw=1.4, label=r.label, **style(i))
+    ax.set_xlabel("time since the start of loading (ms)" if use_time else
+                  "step (pass --dt SECONDS, or keep the LIGGGHTS log in OUTDIR, for time)")
+    ax.set_ylabel(ylabel)
+    ax.set_ylim(-2, 102)
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    save(fig, pngdir, name, written)
+
+
+def fig_per_interval(runs, key, ylabel, title, name, pngdir, written, ylim=None):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    for i, r in enumerate(runs):
+        d = r.iv["diameter(m)"] * 1e3
+        ax.plot(d, r.iv[key], ms=4, lw=1.4, label=r.label, **style(i))
+    log_diameter_axis(ax)
+    ax.set_xlabel("interval diameter d (mm), log scale")
+    ax.set_ylabel(ylabel)
+    if ylim:
+        ax.set_ylim(*ylim)
+    else:
+        ax.set_ylim(bottom=0)
+    ax.set_title(title)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend()
+    save(fig, pngdir, name, written)
+
+
+def log_diameter_axis(ax):
+    """Log x axis in mm with readable labels (1, 2, 5 x 10^n)."""
+    ax.set_xscale("log")
+    ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 3.0, 5.0)))
+    ax.xaxis.set_major_formatter(FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
+def cumulative(share):
+    tot = float(np.sum(share))
+    if tot <= 0:
+        return None, 0.0
+    return 100.0 * np.cumsum(share) / tot, tot
+
+
+def fig_distributions(runs, pngdir, written):
+    n = len(runs)
+    fig, axes = plt.subplots(1, n, figsize=(max(7.5, 5.6 * n), 4.6), sharey=True,
+                             squeeze=False)
+    for i, (r, ax) in enumerate(zip(runs, axes[0])):
+        d = r.iv["diameter(m)"] * 1e3
+        curves = [("PSD", r.iv["mass%"], "k", "-", "o"),
+                  ("PFD (primary fabric)", r.iv["primary%mass"], "tab:blue", "--", "s"),
+                  ("LPD (loose particles)", r.iv["loose%mass"], "tab:red", ":", "^")]
+        for lab, share, c, ls, mk in curves:
+            cum, tot = cumulative(share)
+            if cum is None:
+                ax.plot([], [], color=c, ls=ls, label="%s: empty (0 %% of the mass)" % lab)
+                continue
+            ax.plot(d, cum, color=c, ls=ls, marker=mk, ms=3.5, lw=1.5,
+                    label="%s, %.1f %% of the mass" % (lab, tot))
+        d1, d2 = 2e3 * r.r1, 2e3 * r.r2
+        if r.r1 > 0 and r.r2 > 0 and d2 >= d1:
+            lo, hi = d1, d2
+            if hi == lo:            # one interval: shade a sliver around it
+                lo, hi = lo / 1.03, hi * 1.03
+            ax.axvspan(lo, hi, color="0.6", alpha=0.25, lw=0,
+                       label="overlapping zone 2r1=%.3g..2r2=%.3g mm\n(%.1f %% of the mass)"
+                       % (d1, d2, r.oz))
+        elif r.r1 > 0 and r.r2 > 0:
+            ax.axvline(0.5 * (d1 + d2), color="0.4", lw=1,
+                       label="no overlap: 2r2=%.3g < 2r1=%.3g mm" % (d2, d1))
+        log_diameter_axis(ax)
+        ax.set_xlabel("diameter d (mm), log scale")
+        if i == 0:
+            ax.set_ylabel("cumulative mass, % of its own fraction\n"
+                          "(each curve ends at 100 %)")
+        ax.set_ylim(-2, 102)
+        ax.set_title("%s (step %d)" % (r.label, r.iv["step"]))
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7.5, loc="upper left")
+    fig.suptitle("Figs. 17/18: PSD, primary fabric (PFD) and loose particle (LPD) "
+                 "distributions, cumulative over the size intervals\n(finest first), "
+                 "each normalised to 100 % of its own mass; shaded: overlapping zone "
+                 "r1..r2 as diameters", fontsize=10)
+    fig.tight_layout()
+    save(fig, pngdir, "fig17_18_distributions.png", written)
+
+
+def fig_rose(runs, pngdir, written):
+    have = [(i, r) for i, r in enumerate(runs) if r.dirs is not None]
+    if not have:
+        warn("no run has a direction histogram (no global vector, no contacts_*.vtp): "
+             "fig15_16_direction_rose.png not drawn")
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(11, 5.4), subplot_kw={"projection": "polar"})
+    texts = []
+    for i, r in have:
+        frac = np.asarray(r.dirs["fraction"], float)
+        force = np.asarray(r.dirs["force"], float)
+        m = len(frac)
+        edges = np.linspace(0.0, 0.5 * np.pi, m + 1)
+        iso = np.cos(edges[:-1]) - np.cos(edges[1:])     # isotropic share per bin
+        dens = frac / iso
+        fmax = force.max() if force.size else 0.0
+        fnorm = force / fmax if fmax > 0 else force
+        # mirror the 0..90 degree histogram into the four quadrants (n and -n are
+        # one contact; the oedometer is symmetric about z); edges[] are the bins
+        if r.dirs["nloaded"] == 0:
+            axes[0].plot([], [], color=style(i)["color"], ls=":",
+                         label="%s: no loaded contacts" % r.label)
+        for ax, val in ((axes[0], dens), (axes[1], fnorm)):
+            if r.dirs["nloaded"] == 0:
+                continue
+            ang = np.linspace(0.0, 2 * np.pi, 1441)
+            # plot angle from "up", clockwise: the line's polar angle from z
+            theta = np.arccos(np.clip(np.abs(np.cos(ang)), 0.0, 1.0))
+            k = np.minimum((theta / (0.5 * np.pi / m)).astype(int), m - 1)
+            rad = val[k]
+            ax.plot(ang, rad, color=style(i)["color"], lw=1.6,
+                    label=r.label if ax is axes[0] else None)
+            ax.fill(ang, rad, color=style(i)["color"], alpha=0.12)
+        F, P = r.dirs["F"], r.dirs["Phi"]
+        texts.append("%s: %d loaded contacts, F_zz=%.3f, Phi_zz=%.3f, max mean force %.3g N [%s]"
+                     % (r.label, r.dirs["nloaded"], F[2], P[2], fmax, r.dirs["source"]))
+    th = np.linspace(0, 2 * np.pi, 181)
+    axes[0].plot(th, np.ones_like(th), "k--", lw=0.8, label="isotropic")
+    for ax, t in ((axes[0], "Fig. 15: contact fraction per bin / isotropic share"),
+                  (axes[1], "Fig. 16: mean normal force per bin / largest bin")):
+        ax.set_theta_zero_location("N")
+        ax.set_theta_direction(-1)
+        grid = list(range(0, 360, 30))
+        ax.set_thetagrids(grid, ["%d\u00b0" % round(math.degrees(math.acos(abs(math.cos(
+            math.radians(g)))))) for g in grid])
+        ax.set_rlabel_position(100)
+        ax.set_title(t, fontsize=10, pad=14)
+    axes[0].legend(loc="upper left", bbox_to_anchor=(-0.15, 1.12), fontsize=8)
+    fig.text(0.5, 0.01, "2-D simplification of the paper's 3-D histograms: angle labels are the polar "
+             "angle of the loaded contact normals from z (up/down = vertical contacts, "
+             "sides = horizontal),\nthe 90/M degree bins mirrored into four quadrants "
+             "(n and -n are one contact; symmetry about z assumed). Left: share of the loaded "
+             "contacts in a bin divided by its isotropic share cos(a) - cos(b) (1 = "
+             "isotropic);\nright: mean normal force of the bin divided by the largest "
+             "bin, as the paper normalises\n" + "\n".join(texts),
+             ha="center", va="bottom", fontsize=7.5)
+    fig.subplots_adjust(bottom=0.16 + 0.03 * len(texts))
+    save(fig, pngdir, "fig15_16_direction_rose.png", written)
+
+
+# ---------------------------------------------------------------- main
+def main(argv=None):
+    ap = argparse.ArgumentParser(
+        prog=PROG, description=__doc__.split("\n\n")[0],
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("outdirs", nargs="+", metavar="OUTDIR",
+                    help="output folder(s) of input_scripts/in.oedometer")
+    ap.add_argument("--labels", nargs="+", metavar="LABEL",
+                    help="one legend label per OUTDIR (default: folder names)")
+    ap.add_argument("--png-dir", metavar="DIR",
+                    help="where to write the PNGs (default: OUTDIR for one run, "
+                         "fabric_plots beside the first OUTDIR for several)")
+    ap.add_argument("--dt", type=float, metavar="SECONDS",
+                    help="time step, to plot Figs. 11-12 against time (default: read "
+                         "from a LIGGGHTS log in OUTDIR, else plot against the step)")
+    a = ap.parse_args(argv)
+
+    if a.labels and len(a.labels) != len(a.outdirs):
+        ap.error("--labels has %d labels for %d OUTDIRs" % (len(a.labels), len(a.outdirs)))
+    labels = a.labels or [os.path.basename(os.path.normpath(d)) or d for d in a.outdirs]
+
+    missing = []
+    for d in a.outdirs:
+        if not os.path.isdir(d):
+            missing.append("%s: no such folder" % d)
+            continue
+        for f in ("fabric_series.txt", "fabric_intervals.txt"):
+            if not os.path.isfile(os.path.join(d, f)):
+                missing.append("%s: not found" % os.path.join(d, f))
+    if missing:
+        for m in missing:
+            print(PROG + ": error: " + m, file=sys.stderr)
+        print(PROG + ": run input_scripts/in.oedometer with -var out OUTDIR to the end "
+              "first; nothing drawn", file=sys.stderr)
+        return 2
+
+    try:
+        runs = [Run(d, l, a.dt) for d, l in zip(a.outdirs, labels)]
+    except (InputError, OSError) as e:
+        print(PROG + ": error: " + str(e), file=sys.stderr)
+        return 2
+
+    pngdir = a.png_dir or (a.outdirs[0] if len(runs) == 1 else os.path.join(
+        os.path.dirname(os.path.abspath(a.outdirs[0])), "fabric_plots"))
+    os.makedirs(pngdir, exist_ok=True)
+    written = []
+    fig_series(runs, "loose%number", "loose particles, % by number",
+               "Fig. 11: loose particles by number", "fig11_loose_number.png",
+               pngdir, written)
+    fig_series(runs, "primary%mass", "primary fabric, % by mass",
+               "Fig. 12: primary fabric fraction by mass", "fig12_primary_mass.png",
+               pngdir, written)
+    fig_per_interval(runs, "contacts/particle",
+                     "loaded contacts per particle",
+                     "Fig. 13: mean contacts per particle per size interval",
+                     "fig13_contacts_per_particle.png", pngdir, written)
+    fig_per_interval(runs, "force/contact(N)", "mean normal force per loaded contact (N)",
+                     "Fig. 14: mean normal force per contact per size interval",
+                     "fig14_force_per_contact.png", pngdir, written)
+    fig_distributions(runs, pngdir, written)
+    fig_per_interval(runs, "primary%ofinterval",
+                     "primary fabric, % of the interval's mass",
+                     "Fig. 19: contribution of each interval to the primary fabric",
+                     "fig19_primary_of_interval.png", pngdir, written, ylim=(-2, 102))
+    fig_rose(runs, pngdir, written)
+    for p in written:
+        print(p)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
