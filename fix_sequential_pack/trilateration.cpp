@@ -28,27 +28,19 @@ std::optional<MirrorPair> trilaterate(const Sphere& s1, const Sphere& s2,
                                       const Sphere& s3, double r4) {
   auto f = face_frame(s1.centre, s2.centre, s3.centre);
   if (!f) return std::nullopt;
-  double R1 = s1.radius + r4, R2 = s2.radius + r4, R3 = s3.radius + r4;
-  // Eq. (1), first minus second and first minus third line: linear in x, y.
-  double x = (R1 * R1 - R2 * R2 + f->x2 * f->x2) / (2.0 * f->x2);
-  double y = (R1 * R1 - R3 * R3 + f->x3 * f->x3 + f->y3 * f->y3 -
-              2.0 * f->x3 * x) / (2.0 * f->y3);
-  // z from the first line, so |p - c1| = R1 holds whatever the rounding of y,
-  // and |p - c2|, |p - c3| depend on y only through terms scaled by y3.
-  double z2 = R1 * R1 - x * x - y * y;
-  if (!(z2 >= 0.0)) return std::nullopt;
-  double z = std::sqrt(z2);
-  MirrorPair m{f->to_global(x, y, z), f->to_global(x, y, -z)};
-  if (!m.positive.allFinite() || !m.negative.allFinite()) return std::nullopt;
-  return m;
+  return trilaterate(*f, s1.radius, s2.radius, s3.radius, r4);
 }
 
 std::optional<Constriction> constriction(const Sphere& s1, const Sphere& s2,
                                          const Sphere& s3) {
   auto f = face_frame(s1.centre, s2.centre, s3.centre);
   if (!f) return std::nullopt;
-  const double r1 = s1.radius, r2 = s2.radius, r3 = s3.radius;
-  const double x2 = f->x2, x3 = f->x3, y3 = f->y3;
+  return constriction(*f, s1.radius, s2.radius, s3.radius);
+}
+
+std::optional<Constriction> constriction(const FaceFrame& f, double r1,
+                                         double r2, double r3) {
+  const double x2 = f.x2, x3 = f.x3, y3 = f.y3;
   // Eq. (2): differences of the lines give x = a0 + a1 rc, y = b0 + b1 rc;
   // the first line then is quadratic in rc.
   double a0 = (x2 * x2 + r1 * r1 - r2 * r2) / (2.0 * x2);
@@ -81,7 +73,7 @@ std::optional<Constriction> constriction(const Sphere& s1, const Sphere& s2,
     double l2 = (x - x3 * l3) / x2;
     double l1 = 1.0 - l2 - l3;
     if (l1 < -eps || l2 < -eps || l3 < -eps) continue;
-    Vec3 centre = f->to_global(x, y, 0.0);
+    Vec3 centre = f.to_global(x, y, 0.0);
     if (!centre.allFinite()) continue;
     if (!best || rc < best->radius) best = Constriction{centre, rc};
   }

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <optional>
 
 namespace fabric {
@@ -48,6 +49,26 @@ struct MirrorPair {
 };
 std::optional<MirrorPair> trilaterate(const Sphere& s1, const Sphere& s2,
                                       const Sphere& s3, double r4);
+// The same for a face whose frame is known (face_frame of the three centres,
+// default tolerance) and whose spheres have radii r1, r2, r3: a face offered
+// several sizes in turn computes its frame once. Bit-identical results.
+// (Inline: it is the packer's innermost step.)
+inline std::optional<MirrorPair> trilaterate(const FaceFrame& f, double r1,
+                                             double r2, double r3, double r4) {
+  double R1 = r1 + r4, R2 = r2 + r4, R3 = r3 + r4;
+  // Eq. (1), first minus second and first minus third line: linear in x, y.
+  double x = (R1 * R1 - R2 * R2 + f.x2 * f.x2) / (2.0 * f.x2);
+  double y = (R1 * R1 - R3 * R3 + f.x3 * f.x3 + f.y3 * f.y3 -
+              2.0 * f.x3 * x) / (2.0 * f.y3);
+  // z from the first line, so |p - c1| = R1 holds whatever the rounding of y,
+  // and |p - c2|, |p - c3| depend on y only through terms scaled by y3.
+  double z2 = R1 * R1 - x * x - y * y;
+  if (!(z2 >= 0.0)) return std::nullopt;
+  double z = std::sqrt(z2);
+  MirrorPair m{f.to_global(x, y, z), f.to_global(x, y, -z)};
+  if (!m.positive.allFinite() || !m.negative.allFinite()) return std::nullopt;
+  return m;
+}
 
 // Eq. (2): the constriction of the face, the largest circle in the face plane
 // that touches the three spheres' great circles from inside the triangle.
@@ -57,6 +78,9 @@ struct Constriction {
 };
 std::optional<Constriction> constriction(const Sphere& s1, const Sphere& s2,
                                          const Sphere& s3);
+// The same for a face whose frame is known (see trilaterate above).
+std::optional<Constriction> constriction(const FaceFrame& f, double r1,
+                                         double r2, double r3);
 
 // Fig. 8: centre of a sphere of radius r4 in the face plane touching spheres
 // a and b, on the side of the third face centre `towards`. Empty when a and
