@@ -1,12 +1,17 @@
 #!/bin/bash
 # The main job: install what is missing, build, and run the default scene on
-# 2 MPI ranks: pack a Cu = 2.5 specimen with fix sequential/pack, print its
-# summary, and write dumps for ParaView into out/pack/.
+# 2 MPI ranks: fix sequential/pack builds a Cu = 2.5 specimen, a servo lid
+# compresses it without gravity to 100 kPa until the kinetic energy is spent,
+# and compute primary/fabric tells which grains carry the load. Outputs (time
+# series, per-interval table, VTK dumps for ParaView) go to out/oedometer/,
+# the paper's figures as PNG to out/oedometer/ too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_deps.sh
 bash tools/build.sh
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mkdir -p out
-mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.pack -log out/pack.log "$@"
-echo "dumps: out/pack/specimen.dump (text), out/pack/specimen_0.vtk (ParaView)"
+mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log "$@" \
+  | grep -E "^(TIMESTEP|DAMPING|LOADED|STOP|FABRIC|WARNING)|fix sequential/pack|particles:|porosity:|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ "
+/usr/bin/python3 tools/plot_fabric.py out/oedometer
+echo "ParaView: out/oedometer/grains_*.vtk (colour by c_pf[2]: 1 primary fabric, 0 loose), out/oedometer/contacts_*.vtp"
