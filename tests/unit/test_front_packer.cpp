@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <ostream>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -126,7 +128,22 @@ struct Case {
   Arrangement arrangement;
 };
 
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.psd.substr(c.psd.find_last_of('/') + 1) << ", porosity " << c.porosity
+      << ", edge " << c.side << " coarsest diameters, " << to_string(c.arrangement);
+}
+
 class PackingInvariants : public ::testing::TestWithParam<Case> {};
+
+// Test names such as "cu2_5_discrete" instead of the parameter's bytes.
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  std::string file = info.param.psd.substr(info.param.psd.find_last_of('/') + 1);
+  std::string name = file.substr(0, file.rfind('.')) + "_" +
+                     to_string(info.param.arrangement);
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
 
 TEST_P(PackingInvariants, NoOverlapInsideOnTargetPorosityAndMassShares) {
   const Case& c = GetParam();
@@ -145,7 +162,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{kPsd + "/cu2.0.txt", 0.48, 7, Arrangement::layerwise},
         Case{kPsd + "/cu2.5.txt", 0.45, 6, Arrangement::layerwise},
         Case{kPsd + "/cu3.0.txt", 0.45, 5, Arrangement::layerwise},
-        Case{kPsd + "/cu3.5.txt", 0.45, 4, Arrangement::layerwise}));
+        Case{kPsd + "/cu3.5.txt", 0.45, 4, Arrangement::layerwise}),
+    case_name);
 
 INSTANTIATE_TEST_SUITE_P(
     HostileSoils, PackingInvariants,
@@ -153,7 +171,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{kData + "/gap_graded.txt", 0.55, 5, Arrangement::discrete},
         Case{kData + "/gap_graded.txt", 0.45, 5, Arrangement::layerwise},
         Case{kData + "/broad_25.txt", 0.45, 5, Arrangement::discrete},
-        Case{kData + "/broad_25.txt", 0.45, 5, Arrangement::layerwise}));
+        Case{kData + "/broad_25.txt", 0.45, 5, Arrangement::layerwise}),
+    case_name);
 
 // Where the target is out of reach the packer still never overlaps and
 // reports what it could not place.
