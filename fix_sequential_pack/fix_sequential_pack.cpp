@@ -220,8 +220,8 @@ void FixSequentialPack::parse(int narg, char **arg) {
     fail("the container holds about " + fmt("%.4g", total) +
          " particles at this porosity and PSD, needing about " +
          fmt("%.3g", need / 1073741824.0) + " GiB (" +
-         fmt("%.0f", kPackerBytes) + " B per particle on each of " +
-         std::to_string(comm->nprocs) + " ranks plus " +
+         fmt("%.0f", kPackerBytes) + " B per particle on each of the " +
+         std::to_string(comm->nprocs) + " MPI rank(s) plus " +
          fmt("%.0f", kAtomBytes) + " B per atom), more than the " +
          fmt("%.3g", memory / 1073741824.0) +
          " GiB here (and at most " + std::to_string(INT32_MAX / 4) +
@@ -274,6 +274,24 @@ void FixSequentialPack::insert_specimen() {
                placed, total, 100.0 * placed / total);
       message(b);
     };
+  // Atoms already in the container (another packing, or this fix under a
+  // new ID after read_restart) are not seen by the packer.
+  bigint inside_local = 0, inside = 0;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    bool in = true;
+    for (int a = 0; a < 3; ++a)
+      in = in && atom->x[i][a] > lo_[a] && atom->x[i][a] < hi_[a];
+    inside_local += in;
+  }
+  MPI_Allreduce(&inside_local, &inside, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (inside > 0 && comm->me == 0) {
+    char w[256];
+    snprintf(w, sizeof w,
+             "Fix sequential/pack: %lld atoms already lie in container '%s'; "
+             "the packing does not see them and will overlap them",
+             static_cast<long long>(inside), region_id_.c_str());
+    error->warning(FLERR, w);
+  }
   message("fix sequential/pack: packing " + std::to_string(list_.total()) +
           " particles (" + fabric::to_string(arrangement_) + ")");
   double t0 = MPI_Wtime();
@@ -392,10 +410,20 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
   if (std::abs(achieved - porosity_) > 0.005) {
     snprintf(b, sizeof b,
              "Fix sequential/pack: target porosity %.4f not reached: achieved "
-             "%.4f with %lld of %lld particles not placed. Raise the porosity, "
-             "use a larger container (the layer along the walls packs "
-             "looser), or arrangement discrete",
-             porosity_, achieved, not_placed, list_.total());
+             "%.4f with %lld of %lld particles not placed. Raise the porosity "
+             "or use a larger container (the layer along the walls packs "
+             "looser)%s",
+             porosity_, achieved, not_placed, list_.total(),
+             arrangement_ == fabric::Arrangement::layerwise
+                 ? "; arrangement discrete packs denser" : "");
+    error->warning(FLERR, b);
+  } else if (inner < porosity_ - 0.03) {
+    snprintf(b, sizeof b,
+             "Fix sequential/pack: every particle is placed, but the centre "
+             "of the specimen (porosity %.4f) is denser than the target %.4f "
+             "and its edges looser: the target is looser than this "
+             "arrangement packs; lower the porosity for a uniform specimen",
+             inner, porosity_);
     error->warning(FLERR, b);
   }
 }
