@@ -663,8 +663,14 @@ PackingResult FrontPacker::run() {
     reach_ = std::numeric_limits<double>::infinity();
     size_t main_loop_faces = faces_.size();
     for (size_t i = 0; i < faces_.size() && total_left_ > 0; ++i) {
-      Side side = i < main_loop_faces ? Side::pore : Side::open;
-      if (fill_face(static_cast<int>(i), side)) {
+      // A face that closed without a sphere gets its open side again first
+      // (with reach_ infinite every smaller size is tried), then the pore.
+      bool placed = false;
+      if (i < main_loop_faces && state_[i] == kFailed)
+        placed = fill_face(static_cast<int>(i), Side::open);
+      if (!placed)
+        placed = fill_face(static_cast<int>(i), i < main_loop_faces ? Side::pore : Side::open);
+      if (placed) {
         res_.placed_in_second_loop++;
         state_[i] = kFilled;
       }
