@@ -243,7 +243,8 @@ struct DirectionBin {
 // index is -1 and its diameter 0 when there is no such particle.
 struct OverlappingZone {
   int lower_interval = -1, upper_interval = -1;
-  double r1 = 0, r2 = 0;  // representative diameters, as the paper's table
+  double r1 = 0, r2 = 0;  // representative diameters (compute primary/fabric
+                          // reports half of each: radii, as the paper.s Table 2)
   double mass_percent = 0;
 };
 

@@ -184,7 +184,6 @@ class FrontPacker {
   int largest_left();
   int take_random_left(Random& rng);
   void report_progress();
-  void run_layerwise();
   void skip_class(int k);
   bool behind_target();
   double swept_volume(double radius) const;
