@@ -244,7 +244,7 @@ struct DirectionBin {
 struct OverlappingZone {
   int lower_interval = -1, upper_interval = -1;
   double r1 = 0, r2 = 0;  // representative diameters (compute primary/fabric
-                          // reports half of each: radii, as the paper.s Table 2)
+                          // reports half of each: radii, as the paper's Table 2)
   double mass_percent = 0;
 };
 

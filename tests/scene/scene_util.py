@@ -209,10 +209,9 @@ timestep        1e-7
 """
 
 
-def header(box, atom_style="granular", processors=None):
-    """units .. create_box for a box [0, box]^3 (box: edge or (x, y, z))."""
-    if not isinstance(box, (tuple, list)):
-        box = (box, box, box)
+def preamble(atom_style="granular", processors=None):
+    """The settings every granular scene here starts with (newton off and an
+    atom map: compute primary/fabric needs both)."""
     lines = ["units           si",
              "atom_style      %s" % atom_style,
              "atom_modify     map array",
@@ -221,10 +220,16 @@ def header(box, atom_style="granular", processors=None):
              "communicate     single vel yes"]
     if processors:
         lines.append("processors      %s" % processors)
-    lines += ["region          box block 0 %s 0 %s 0 %s units box"
-              % tuple(num(b) for b in box),
-              "create_box      1 box"]
     return "\n".join(lines) + "\n"
+
+
+def header(box, atom_style="granular", processors=None):
+    """units .. create_box for a box [0, box]^3 (box: edge or (x, y, z))."""
+    if not isinstance(box, (tuple, list)):
+        box = (box, box, box)
+    return preamble(atom_style, processors) + (
+        "region          box block 0 %s 0 %s 0 %s units box\n"
+        % tuple(num(b) for b in box) + "create_box      1 box\n")
 
 
 def block_region(rid, lo, hi, extra=""):

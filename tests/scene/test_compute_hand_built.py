@@ -13,14 +13,7 @@ import os
 import scene_util as su
 
 COLUMN = """\
-units si
-atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-{processors}
-region box block -0.01 0.01 -0.01 0.01 -0.001 0.008 units box
+{preamble}region box block -0.01 0.01 -0.01 0.01 -0.001 0.008 units box
 create_box 2 box
 neigh_modify delay 0
 fix m1 all property/global kn peratomtypepair 2 2e7 2e7 2e7 2e7
@@ -58,7 +51,7 @@ def run_column(args, chk, name, compute, nprocs=None, processors="", free=FREE):
     work = args.work
     dump = os.path.join(work, name + ".dump")
     inp = su.write_file(os.path.join(work, "in." + name), COLUMN.format(
-        processors=processors, compute=compute, dump=dump, free=free))
+        preamble=su.preamble(processors=processors or None), compute=compute, dump=dump, free=free))
     res = su.run_launcher(args, inp, nprocs=nprocs)
     ok = chk.check("%s runs" % name, res.returncode == 0 and os.path.isfile(dump),
                    res.describe())
@@ -66,6 +59,19 @@ def run_column(args, chk, name, compute, nprocs=None, processors="", free=FREE):
         return None
     s = su.last_snapshot(dump)
     return {int(r[0]): (int(float(r[2])), int(float(r[3]))) for r in s.rows}
+
+
+def expect_error(args, chk, what, text, expect):
+    """Runs `text`; it must end with an ERROR (containing `expect`, if given),
+    without a crash or a hang."""
+    inp = su.write_file(os.path.join(args.work, "in.bad"), text)
+    res = su.run_launcher(args, inp, timeout=60)
+    err = [l for l in res.text.splitlines() if "ERROR" in l]
+    ok = not res.crashed() and not res.timed_out and bool(err)
+    if expect:
+        ok = ok and expect in err[0]
+    chk.check("%s: ERROR%s" % (what, " containing %r" % expect if expect else ""),
+              ok, "\n".join(err) or res.describe())
 
 
 def main():
@@ -84,13 +90,13 @@ def main():
                   all(c == 0 for (_, c) in three.values()), three)
     two = run_column(args, chk, "column_2ranks",
                      "compute pf all primary/fabric min_contacts 2 intervals 1",
-                     nprocs=2, processors="processors 1 1 2")
+                     nprocs=2, processors="1 1 2")
     if two is not None:
         chk.check("2 ranks cut through the column: same contacts and classes",
                   two == want, two)
     it = run_column(args, chk, "column_iterate_2ranks",
                     "compute pf all primary/fabric min_contacts 2 prune iterate intervals 1",
-                    nprocs=2, processors="processors 1 1 2")
+                    nprocs=2, processors="1 1 2")
     if it is not None:
         chk.check("prune iterate on 2 ranks: the column stays primary (walls hold it)",
                   it == want, it)
@@ -102,7 +108,7 @@ def main():
     if once is not None:
         chk.check("prune once: A (wall + B) is primary, B (A only) is loose",
                   once.get(4) == (2, 1) and once.get(5) == (1, 0), once)
-    for nprocs, proc in ((None, ""), (2, "processors 1 1 2")):
+    for nprocs, proc in ((None, ""), (2, "1 1 2")):
         itr = run_column(args, chk, "dangling_iterate_%s" % (nprocs or 1),
                          "compute pf all primary/fabric min_contacts 2 prune iterate intervals 1",
                          nprocs=nprocs, processors=proc, free=DANGLING)
@@ -130,15 +136,10 @@ def main():
          "fit no size interval"),
         ("intervals 0", base.replace("intervals 1", "intervals 0"), "1..100"),
     ]
+    dump = os.path.join(args.work, "bad.dump")
     for what, compute, expect in cases:
-        dump = os.path.join(args.work, "bad.dump")
-        inp = su.write_file(os.path.join(args.work, "in.bad"), COLUMN.format(
-            processors="", compute=compute, dump=dump, free=FREE))
-        res = su.run_launcher(args, inp, timeout=60)
-        err = [l for l in res.text.splitlines() if "ERROR" in l]
-        chk.check("%s: ERROR containing %r" % (what, expect),
-                  not res.crashed() and not res.timed_out and err and expect in err[0],
-                  "\n".join(err) or res.describe())
+        expect_error(args, chk, what, COLUMN.format(
+            preamble=su.preamble(), compute=compute, dump=dump, free=FREE), expect)
 
     # A wall without stored contacts, a non-granular style, no pair style.
     variants = [
@@ -146,7 +147,7 @@ def main():
          lambda t: t.replace("zplane 0.0 store_force_contact yes", "zplane 0.0"),
          "store_force_contact yes"),
         ("non-granular atom style",
-         lambda t: t.replace("atom_style granular", "atom_style atomic")
+         lambda t: t.replace("atom_style      granular", "atom_style      atomic")
                     .replace("set atom * diameter 0.002 density 2650", "mass * 1"),
          None),
         ("no granular pair style before the compute",
@@ -155,16 +156,8 @@ def main():
          "granular pair style"),
     ]
     for what, change, expect in variants:
-        dump = os.path.join(args.work, "bad.dump")
-        text = change(COLUMN.format(processors="", compute=base, dump=dump, free=FREE))
-        inp = su.write_file(os.path.join(args.work, "in.bad"), text)
-        res = su.run_launcher(args, inp, timeout=60)
-        err = [l for l in res.text.splitlines() if "ERROR" in l]
-        ok = not res.crashed() and not res.timed_out and bool(err)
-        if expect:
-            ok = ok and expect in err[0]
-        chk.check("%s: ERROR%s" % (what, " containing %r" % expect if expect else ""),
-                  ok, "\n".join(err) or res.describe())
+        expect_error(args, chk, what, change(COLUMN.format(
+            preamble=su.preamble(), compute=base, dump=dump, free=FREE)), expect)
     chk.finish()
 
 

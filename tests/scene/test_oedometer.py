@@ -26,14 +26,7 @@ STRESS = 100e3
 KN = 2e7
 
 RESTART = """\
-units           si
-atom_style      granular
-atom_modify     map array
-boundary        f f f
-newton          off
-communicate     single vel yes
-{processors}
-read_restart    {restart}
+{preamble}read_restart    {restart}
 neighbor        5e-5 bin
 neigh_modify    delay 0
 fix m_kn  all property/global kn peratomtypepair 2 2e7 2e7 2e7 2e7
@@ -128,10 +121,10 @@ def main():
     # The same state on 1 and 2 ranks.
     dmp = re.search(r"DAMPING: G_n = ([-0-9.eE+]+) 1/s, G_t = ([-0-9.eE+]+) 1/s", text)
     classes = {}
-    for n, proc in ((None, ""), (2, "processors 2 1 1")):
+    for n, proc in ((None, ""), (2, "2 1 1")):
         dump = os.path.join(args.work, "state_%s.dump" % (n or 1))
         inp = su.write_file(os.path.join(args.work, "in.state_%s" % (n or 1)), RESTART.format(
-            processors=proc, restart=os.path.join(out, "final.restart"), gn=dmp.group(1),
+            preamble=su.preamble(processors=proc or None), restart=os.path.join(out, "final.restart"), gn=dmp.group(1),
             gt=dmp.group(2), L=su.num(L), hL=su.num(L / 2), zlid=su.num(zlid),
             mesh=os.path.join(args.source, "input_scripts", "meshes", "lid.stl"), dump=dump))
         r2 = su.run_launcher(args, inp, nprocs=n, timeout=300)
