@@ -146,10 +146,12 @@ def main():
         ("granular wall without store_force_contact",
          lambda t: t.replace("zplane 0.0 store_force_contact yes", "zplane 0.0"),
          "store_force_contact yes"),
-        ("non-granular atom style",
+        ("non-granular atom style (checked before the pair style)",
          lambda t: t.replace("atom_style      granular", "atom_style      atomic")
-                    .replace("set atom * diameter 0.002 density 2650", "mass * 1"),
-         None),
+                    .replace("set atom * diameter 0.002 density 2650", "mass * 1")
+                    .replace("pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n", "")
+                    .split("fix wb")[0] + "{compute}\n".format(compute=base) + "run 0\n",
+         "requires atom_style granular"),
         ("no granular pair style before the compute",
          lambda t: t.replace("pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n", "")
                     .replace("fix nve all nve/sphere", "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\nfix nve all nve/sphere"),
