@@ -15,6 +15,8 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fabric_outputs.h"
+#include "fix.h"
 #include "fix_contact_property_atom.h"
 #include "fix_mesh_surface.h"
 #include "fix_wall_gran.h"
@@ -28,14 +30,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-// Global vector: fixed entries, then two per direction bin.
-constexpr int kFixedEntries = 26;
-// Global array: columns per size interval.
-constexpr int kArrayColumns = 8;
-
-}  // namespace
 
 ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
                                            char **arg)
@@ -47,7 +41,6 @@ ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
       analysed_step_(-1),
       threshold_force_(0.0),
       iterations_(0),
-      converged_(true),
       nmax_(0),
       peratom_(nullptr),
       loose_(nullptr) {
@@ -71,11 +64,11 @@ ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
   peratom_flag = 1;
   size_peratom_cols = 3;
   vector_flag = 1;
-  size_vector = kFixedEntries + 2 * options_.direction_bins;
+  size_vector = fabric::vector_size(options_.direction_bins);
   extvector = 0;
   array_flag = 1;
   size_array_rows = nintervals_;
-  size_array_cols = kArrayColumns;
+  size_array_cols = fabric::kArrayColumns;
   extarray = 0;
   comm_forward = 1;
   vector = new double[size_vector]();
@@ -117,7 +110,7 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
   static const char *keywords[] = {"min_contacts", "force_threshold", "prune",
                                    "intervals", "psd", "walls",
                                    "direction_bins", "walls_in_fabric",
-                                   "max_iterations"};
+                                   "max_iterations", "intervals_from"};
   auto is_keyword = [&](const char *s) {
     for (const char *k : keywords)
       if (strcmp(s, k) == 0) return true;
@@ -162,6 +155,10 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
         fail("intervals " + std::string(arg[i + 1]) + " must lie in 1..100");
       nintervals_ = static_cast<int>(n);
       i += 2;
+    } else if (kw == "intervals_from") {
+      intervals_from_ = value(i, "the ID of a fix that stores each atom's "
+                                 "interval index (fix sequential/pack)");
+      i += 2;
     } else if (kw == "psd") {
       psd_file_ = value(i, "a PSD file");
       i += 2;
@@ -190,8 +187,8 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
       i += 2;
     } else {
       fail("unknown keyword '" + kw + "': allowed are min_contacts "
-           "force_threshold prune intervals psd walls direction_bins "
-           "walls_in_fabric max_iterations");
+           "force_threshold prune intervals intervals_from psd walls "
+           "direction_bins walls_in_fabric max_iterations");
     }
   }
   if (!psd_file_.empty()) {
@@ -224,6 +221,20 @@ void ComputePrimaryFabric::init() {
     error->all(FLERR, "Compute primary/fabric needs the pair style's contact "
                       "forces on every step");
   find_walls();
+  interval_fix_ = nullptr;
+  if (!intervals_from_.empty()) {
+    int f = modify->find_fix(const_cast<char *>(intervals_from_.c_str()));
+    if (f < 0)
+      error->all(FLERR, ("Compute primary/fabric: intervals_from fix ID '" +
+                         intervals_from_ + "' does not exist").c_str());
+    Fix *fix = modify->fix[f];
+    if (!fix->peratom_flag || fix->size_peratom_cols != 0)
+      error->all(FLERR, ("Compute primary/fabric: intervals_from fix '" +
+                         intervals_from_ + "' (style " + fix->style +
+                         ") stores no per-atom vector of interval indices; "
+                         "use the ID of a fix sequential/pack").c_str());
+    interval_fix_ = fix;
+  }
   analysed_step_ = -1;  // a new run: atoms may have moved on this same step
   warned_ = false;
 }
@@ -247,46 +258,25 @@ void ComputePrimaryFabric::find_walls() {
                                   std::string(f->id)) == wall_ids_.end())
       continue;
     FixWallGran *w = static_cast<FixWallGran *>(f);
-    if (w->store_force_contact() && w->store_force_contact_every() != 1)
+    // The stress storage keeps, per contact, the force on the particle and
+    // the contact vector from the wall to the particle: the true normal.
+    if (!w->store_force_contact_stress())
       error->all(FLERR, ("Compute primary/fabric: wall fix '" +
-                         std::string(f->id) + "' stores its contacts only every " +
-                         std::to_string(w->store_force_contact_every()) +
-                         " steps; remove store_force_contact_every").c_str());
-    if (!w->store_force_contact())
-      error->all(FLERR, ("Compute primary/fabric: wall fix '" +
-                         std::string(f->id) + "' does not store its contacts: "
-                         "add 'store_force_contact yes' to it (or leave it out "
-                         "with the compute's 'walls' keyword)").c_str());
+                         std::string(f->id) + "' does not store its contacts "
+                         "with their normals: add 'store_force_contact_stress "
+                         "yes' to it (or leave it out with the compute's "
+                         "'walls' keyword)").c_str());
     if (w->is_mesh_wall()) {
       for (int m = 0; m < w->n_meshes(); ++m) {
-        FixContactPropertyAtom *c = w->mesh_list()[m]->meshforceContact();
+        FixContactPropertyAtom *c = w->mesh_list()[m]->meshforceContactStress();
         if (c) wall_contacts_.push_back(c);
       }
     } else {
-      std::string cid = std::string("contactforces_") + f->id;
+      std::string cid = std::string("contactforces_stress_") + f->id;
       Fix *c = modify->find_fix_id(const_cast<char *>(cid.c_str()));
       if (c) wall_contacts_.push_back(static_cast<FixContactPropertyAtom *>(c));
     }
   }
-}
-
-int ComputePrimaryFabric::interval_of(double d) const {
-  if (!class_upper_.empty()) {  // a PSD: intervals by their diameter bounds
-    const double tol = 1e-6;
-    if (d < class_lower_.front() * (1 - tol) || d > class_upper_.back() * (1 + tol))
-      return -1;
-    auto it = std::lower_bound(class_upper_.begin(), class_upper_.end(),
-                               d * (1 - 1e-12));
-    return std::min<int>(it - class_upper_.begin(), nintervals_ - 1);
-  }
-  // The specimen's own sizes: the nearest, to a relative 1e-9.
-  auto it = std::lower_bound(class_diameter_.begin(), class_diameter_.end(), d);
-  int k = static_cast<int>(it - class_diameter_.begin());
-  for (int c : {k - 1, k})
-    if (c >= 0 && c < (int)class_diameter_.size() &&
-        std::abs(class_diameter_[c] - d) <= 1e-9 * d)
-      return c;
-  return -1;
 }
 
 // Without a PSD the size intervals are the specimen's distinct diameters
@@ -295,10 +285,7 @@ void ComputePrimaryFabric::assign_intervals() {
   std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; ++i)
     if (atom->mask[i] & groupbit) mine.push_back(2.0 * atom->radius[i]);
-  std::sort(mine.begin(), mine.end());
-  std::vector<double> uniq;
-  for (double d : mine)
-    if (uniq.empty() || d > uniq.back() * (1 + 1e-9)) uniq.push_back(d);
+  std::vector<double> uniq = fabric::IntervalAssignment::distinct(mine);
   if (uniq.size() > 1000) uniq.resize(1001);  // more than any interval count
   int n = static_cast<int>(uniq.size());
   std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
@@ -309,11 +296,7 @@ void ComputePrimaryFabric::assign_intervals() {
   std::vector<double> all(total);
   MPI_Allgatherv(uniq.data(), n, MPI_DOUBLE, all.data(), counts.data(),
                  displs.data(), MPI_DOUBLE, world);
-  std::sort(all.begin(), all.end());
-  class_diameter_.clear();
-  for (double d : all)
-    if (class_diameter_.empty() || d > class_diameter_.back() * (1 + 1e-9))
-      class_diameter_.push_back(d);
+  class_diameter_ = fabric::IntervalAssignment::distinct(all);
   if ((int)class_diameter_.size() != nintervals_) {
     char m[512];
     snprintf(m, sizeof m,
@@ -335,10 +318,46 @@ void ComputePrimaryFabric::assign_intervals() {
   intervals_ready_ = true;
 }
 
+// The size intervals of this evaluation and their representative diameters
+// (empty: the measured mean diameter of each interval's particles).
+fabric::IntervalAssignment ComputePrimaryFabric::interval_assignment(
+    std::vector<double> &representative) {
+  representative.clear();
+  if (!psd_file_.empty()) {  // a PSD: its intervals' bounds and mean diameters
+    representative = class_diameter_;
+    return fabric::IntervalAssignment::from_bounds(class_lower_, class_upper_);
+  }
+  if (interval_fix_) {
+    // The fix's own particles say which diameters each interval holds: the
+    // fallback for particles without an index takes the interval whose
+    // range contains their diameter.
+    const double *stored = interval_fix_->vector_atom;
+    std::vector<double> lo(nintervals_, INFINITY), hi(nintervals_, -INFINITY);
+    for (int i = 0; i < atom->nlocal; ++i) {
+      if (!(atom->mask[i] & groupbit) || !stored) continue;
+      const double k = stored[i];
+      if (k >= 1 && k <= nintervals_ && k == std::floor(k)) {
+        const double d = 2.0 * atom->radius[i];
+        lo[int(k) - 1] = std::min(lo[int(k) - 1], d);
+        hi[int(k) - 1] = std::max(hi[int(k) - 1], d);
+      }
+    }
+    std::vector<double> glo(nintervals_), ghi(nintervals_);
+    MPI_Allreduce(lo.data(), glo.data(), nintervals_, MPI_DOUBLE, MPI_MIN,
+                  world);
+    MPI_Allreduce(hi.data(), ghi.data(), nintervals_, MPI_DOUBLE, MPI_MAX,
+                  world);
+    return fabric::IntervalAssignment::from_ranges(glo, ghi);
+  }
+  if (!intervals_ready_) assign_intervals();
+  representative = class_diameter_;
+  return fabric::IntervalAssignment::from_ranges(class_diameter_,
+                                                 class_diameter_);
+}
+
 void ComputePrimaryFabric::analyse() {
   if (analysed_step_ == update->ntimestep) return;
   analysed_step_ = update->ntimestep;
-  if (!intervals_ready_) assign_intervals();
 
   if (atom->nmax > nmax_) {
     memory->destroy(peratom_);
@@ -351,23 +370,50 @@ void ComputePrimaryFabric::analyse() {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   double **x = atom->x;
 
-  // The particles of this rank's group.
+  // The particles of this rank's group and their size intervals.
+  std::vector<double> representative;
+  const fabric::IntervalAssignment intervals =
+      interval_assignment(representative);
+  const bool any_atoms = intervals.intervals() > 0;
+  const double *stored = interval_fix_ ? interval_fix_->vector_atom : nullptr;
   std::vector<int> index(nlocal, -1);
   std::vector<fabric::Particle> particles;
-  long long outside = 0;
-  double outside_d = 0.0;
+  long long outside = 0, bad_index = 0;
+  double outside_d = 0.0, bad_value = 0.0;
+  std::string bad_message;
   for (int i = 0; i < nlocal; ++i) {
     peratom_[i][0] = peratom_[i][1] = peratom_[i][2] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
-    int k = intervals_ready_ ? interval_of(2.0 * atom->radius[i]) : 0;
+    const double d = 2.0 * atom->radius[i];
+    int k = 0;
+    try {
+      k = any_atoms ? intervals.of(stored ? stored[i] : 0.0, d) : 0;
+    } catch (const std::exception &e) {
+      if (bad_index++ == 0) bad_message = e.what();
+      bad_value = stored[i];
+      continue;
+    }
     if (k < 0) {
       ++outside;
-      outside_d = 2.0 * atom->radius[i];
+      outside_d = d;
       continue;
     }
     index[i] = static_cast<int>(particles.size());
     particles.push_back({static_cast<long long>(atom->tag[i]), atom->radius[i],
                          atom->rmass[i], k});
+  }
+  long long bad_all = 0;
+  MPI_Allreduce(&bad_index, &bad_all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (bad_all > 0) {
+    double v = 0.0;
+    MPI_Allreduce(&bad_value, &v, 1, MPI_DOUBLE, MPI_MAX, world);
+    char m[512];
+    snprintf(m, sizeof m,
+             "Compute primary/fabric: %lld particles (e.g. index %g) carry an "
+             "interval index of fix '%s' that is not an integer in 0..%d: "
+             "give the compute the fix's number of intervals (intervals N)",
+             bad_all, v, intervals_from_.c_str(), nintervals_);
+    error->all(FLERR, m);
   }
   long long outside_all = 0;
   MPI_Allreduce(&outside, &outside_all, 1, MPI_LONG_LONG, MPI_SUM, world);
@@ -380,12 +426,18 @@ void ComputePrimaryFabric::analyse() {
              "size interval of %s: the PSD or intervals setting does not "
              "match the specimen",
              outside_all, d,
-             psd_file_.empty() ? "the specimen's sizes" : psd_file_.c_str());
+             !psd_file_.empty() ? psd_file_.c_str()
+             : interval_fix_   ? ("the particles of fix " + intervals_from_ +
+                                " (intervals_from)").c_str()
+                               : "the specimen's sizes");
     error->all(FLERR, m);
   }
 
   // Each owned particle's contact ends: both ends of every contact live on
   // the ranks that own them (newton off), so each end is passed as a half.
+  // One definition of the normal force for particles and walls alike
+  // (fabric::normal_force): the force on the particle projected onto the
+  // contact normal from the partner to the particle.
   FixContactPropertyAtom *cf = pair_->fix_contact_forces();
   if (!cf)
     error->all(FLERR, "Compute primary/fabric: the pair style stores no "
@@ -401,27 +453,21 @@ void ComputePrimaryFabric::analyse() {
       if (j < 0) continue;  // not within reach: no longer in contact
       j = domain->closest_image(i, j);  // the image across a periodic side
       const double *F = cf->contacthistory(i, k);
-      Eigen::Vector3d d(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
-      double dist = d.norm();
-      if (!(dist > 0.0)) continue;
-      fabric::ParticleContact c;
-      c.i = index[i];
-      c.normal = -d / dist;  // branch i -> j
-      c.normal_force = (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]) / dist;
-      c.complete = false;
-      contacts.push_back(c);
+      const Eigen::Vector3d j_to_i(x[i][0] - x[j][0], x[i][1] - x[j][1],
+                                   x[i][2] - x[j][2]);
+      if (!(j_to_i.norm() > 0.0)) continue;
+      contacts.push_back(fabric::particle_contact(
+          index[i], -1, Eigen::Vector3d(F[0], F[1], F[2]), j_to_i, false));
       partner.push_back(j);
     }
+    // The wall's stress storage: fx fy fz, then the contact vector from the
+    // wall's contact point to the particle's centre (deltax..deltaz).
     for (FixContactPropertyAtom *w : wall_contacts_)
       for (int k = 0; k < w->n_partner(i); ++k) {
         const double *F = w->contacthistory(i, k);
-        Eigen::Vector3d f(F[0], F[1], F[2]);
-        double magnitude = f.norm();
-        // A wall's stored force is the whole contact force; its magnitude
-        // stands for the normal force (they differ by at most sqrt(1+mu^2)).
-        walls.push_back({index[i], magnitude,
-                         magnitude > 0 ? Eigen::Vector3d(f / magnitude)
-                                       : Eigen::Vector3d(0, 0, 1)});
+        walls.push_back(fabric::wall_contact(
+            index[i], Eigen::Vector3d(F[0], F[1], F[2]),
+            Eigen::Vector3d(F[3], F[4], F[5])));
       }
   }
 
@@ -432,45 +478,33 @@ void ComputePrimaryFabric::analyse() {
                   MPI_SUM, world);
     threshold_force_ = options_.threshold.force(global.mean());
 
-    fabric::Options once = options_;
-    once.pruning = fabric::Pruning::once;
-    const int n = static_cast<int>(particles.size());
-    fabric::Classification cls = fabric::classify(n, contacts, walls,
-                                                  threshold_force_, once);
-    const std::vector<int> raw_contacts = cls.loaded_contacts;
-    iterations_ = 0;
-    converged_ = true;
-    if (options_.pruning == fabric::Pruning::iterate) {
-      // Remove the loose particles and recount their neighbours until
-      // nothing changes; partners' classes cross ranks by forward comm.
-      for (;;) {
-        for (int i = 0; i < nall; ++i) loose_[i] = 0.0;
-        for (int i = 0; i < nlocal; ++i)
-          if (index[i] >= 0 && cls.fraction[index[i]] == fabric::Fraction::loose)
-            loose_[i] = 1.0;
-        comm->forward_comm_compute(this);
-        std::vector<fabric::ParticleContact> kept;
-        for (size_t c = 0; c < contacts.size(); ++c)
-          if (loose_[partner[c]] == 0.0) kept.push_back(contacts[c]);
-        auto next = fabric::classify(n, kept, walls, threshold_force_, once);
-        long long changed = 0, changed_all = 0;
-        for (int p = 0; p < n; ++p)
-          if (next.fraction[p] != cls.fraction[p]) ++changed;
-        MPI_Allreduce(&changed, &changed_all, 1, MPI_LONG_LONG, MPI_SUM, world);
-        cls.fraction = next.fraction;
-        if (changed_all == 0) break;
-        if (++iterations_ >= options_.max_iterations) {
-          converged_ = false;
-          if (comm->me == 0 && !warned_)
-            error->warning(FLERR, "Compute primary/fabric: prune iterate did "
-                                  "not converge within max_iterations");
-          warned_ = true;
-          break;
-        }
-      }
-      cls.loaded_contacts = raw_contacts;
-      cls.iterations = iterations_;
-      cls.converged = converged_;
+    // prune iterate: the core's loop; the partners' classes cross the ranks
+    // by forward communication, each pass's count by a reduction.
+    fabric::PartnerExchange exchange;
+    exchange.partners_loose = [&](const std::vector<fabric::Fraction> &f,
+                                  std::vector<char> &partner_loose) {
+      for (int i = 0; i < nall; ++i) loose_[i] = 0.0;
+      for (int i = 0; i < nlocal; ++i)
+        if (index[i] >= 0 && f[index[i]] == fabric::Fraction::loose)
+          loose_[i] = 1.0;
+      comm->forward_comm_compute(this);
+      for (size_t c = 0; c < partner.size(); ++c)
+        partner_loose[c] = loose_[partner[c]] != 0.0;
+    };
+    exchange.global_sum = [&](long long n) {
+      long long all = 0;
+      MPI_Allreduce(&n, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+      return all;
+    };
+    const fabric::Classification cls = fabric::classify(
+        static_cast<int>(particles.size()), contacts, walls, threshold_force_,
+        options_, &exchange);
+    iterations_ = cls.iterations;
+    if (!cls.converged) {
+      if (comm->me == 0 && !warned_)
+        error->warning(FLERR, "Compute primary/fabric: prune iterate did "
+                              "not converge within max_iterations");
+      warned_ = true;
     }
 
     fabric::FabricSums sums = fabric::accumulate(
@@ -478,12 +512,12 @@ void ComputePrimaryFabric::analyse() {
     fabric::FabricSums total(nintervals_, options_.direction_bins);
     MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
                   world);
-    summary_ = fabric::finalise(total, class_diameter_);
+    summary_ = fabric::finalise(total, representative);
 
     for (int i = 0; i < nlocal; ++i) {
       if (index[i] < 0) continue;
       int p = index[i];
-      peratom_[i][0] = raw_contacts[p];
+      peratom_[i][0] = cls.loaded_contacts[p];
       peratom_[i][1] = cls.fraction[p] == fabric::Fraction::primary ? 1.0 : 0.0;
       peratom_[i][2] = particles[p].interval + 1;
     }
@@ -500,41 +534,21 @@ void ComputePrimaryFabric::compute_peratom() {
 void ComputePrimaryFabric::compute_vector() {
   invoked_vector = update->ntimestep;
   analyse();
-  const fabric::FabricSummary &s = summary_;
-  const auto &oz = s.overlapping_zone;
-  double v[kFixedEntries] = {
-      s.particles, s.loose_particles, s.loose_percent_by_number,
-      s.primary_percent_by_mass, s.coordination, s.primary_coordination,
-      0.5 * oz.r1, 0.5 * oz.r2, oz.mass_percent, s.contacts, s.loaded_contacts,
-      s.mean_normal_force, threshold_force_, double(iterations_),
-      s.fabric_tensor(0, 0), s.fabric_tensor(1, 1), s.fabric_tensor(2, 2),
-      s.fabric_tensor(0, 1), s.fabric_tensor(0, 2), s.fabric_tensor(1, 2),
-      s.force_fabric_tensor(0, 0), s.force_fabric_tensor(1, 1),
-      s.force_fabric_tensor(2, 2), s.force_fabric_tensor(0, 1),
-      s.force_fabric_tensor(0, 2), s.force_fabric_tensor(1, 2)};
-  std::copy(v, v + kFixedEntries, vector);
-  for (int b = 0; b < options_.direction_bins; ++b) {
-    double frac = 0.0, force_mean = 0.0;
-    if (b < (int)s.directions.size()) {
-      frac = s.directions[b].contact_fraction;
-      force_mean = s.directions[b].mean_normal_force;
-    }
-    vector[kFixedEntries + 2 * b] = frac;
-    vector[kFixedEntries + 2 * b + 1] = force_mean;
-  }
+  // Layout: fabric_outputs.h.
+  const std::vector<double> v = fabric::global_vector(
+      summary_, threshold_force_, iterations_, options_.direction_bins);
+  std::copy(v.begin(), v.end(), vector);
 }
 
 void ComputePrimaryFabric::compute_array() {
   invoked_array = update->ntimestep;
   analyse();
+  // Layout: fabric_outputs.h.
   for (int k = 0; k < nintervals_; ++k) {
     fabric::IntervalSummary r;
     if (k < (int)summary_.intervals.size()) r = summary_.intervals[k];
-    double row[kArrayColumns] = {
-        r.diameter, r.mass_percent, r.primary_percent_of_interval,
-        r.loose_mass_percent, r.loaded_contacts_per_particle,
-        r.normal_force_per_loaded_contact, r.primary_mass_percent, r.particles};
-    std::copy(row, row + kArrayColumns, array[k]);
+    const auto row = fabric::interval_row(r);
+    std::copy(row.begin(), row.end(), array[k]);
   }
 }
 

@@ -19,6 +19,7 @@ ComputeStyle(primary/fabric,ComputePrimaryFabric)
 
 #include "compute.h"
 #include "fabric_analysis.h"
+#include "interval_assignment.h"
 
 namespace LAMMPS_NS {
 
@@ -39,11 +40,14 @@ class ComputePrimaryFabric : public Compute {
   void find_walls();
   void analyse();      // once per step: classification and sums
   void assign_intervals();
-  int interval_of(double diameter) const;
+  fabric::IntervalAssignment interval_assignment(
+      std::vector<double> &representative);
 
   fabric::Options options_;
   int nintervals_;
   std::string psd_file_;
+  std::string intervals_from_;  // fix storing each atom's interval index
+  class Fix *interval_fix_ = nullptr;
   std::vector<std::string> wall_ids_;  // empty: every granular wall
   bool walls_given_;
 
@@ -57,7 +61,6 @@ class ComputePrimaryFabric : public Compute {
   fabric::FabricSummary summary_;
   double threshold_force_;
   int iterations_;
-  bool converged_;
   bool warned_ = false;
 
   int nmax_;

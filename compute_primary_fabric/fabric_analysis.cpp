@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -81,42 +82,68 @@ int direction_bin(const Eigen::Vector3d& unit_normal, int bins) {
 // Pruning::iterate, continuing from the `once` classification in `c`.
 void prune_iteratively(const std::vector<ParticleContact>& contacts,
                        double threshold_force, const Options& options,
-                       Classification& c) {
+                       const PartnerExchange* exchange, Classification& c) {
   const int n = static_cast<int>(c.fraction.size());
-  // Loaded particle-particle neighbours as a compressed adjacency list.
+  // Loaded particle-particle neighbours as a compressed adjacency list
+  // (complete contacts); the incomplete ones are visited directly.
   std::vector<int> offset(n + 1, 0);
-  for (const ParticleContact& k : contacts)
-    if (is_loaded(k.normal_force, threshold_force)) {
-      ++offset[k.i + 1];
-      ++offset[k.j + 1];
+  std::vector<std::size_t> across;  // loaded incomplete contacts
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const ParticleContact& t = contacts[k];
+    if (!is_loaded(t.normal_force, threshold_force)) continue;
+    if (!t.complete) {
+      across.push_back(k);
+      continue;
     }
+    ++offset[t.i + 1];
+    ++offset[t.j + 1];
+  }
   std::partial_sum(offset.begin(), offset.end(), offset.begin());
   std::vector<int> neighbour(offset[n]);
   std::vector<int> fill(offset.begin(), offset.end() - 1);
-  for (const ParticleContact& k : contacts)
-    if (is_loaded(k.normal_force, threshold_force)) {
-      neighbour[fill[k.i]++] = k.j;
-      neighbour[fill[k.j]++] = k.i;
+  for (const ParticleContact& t : contacts)
+    if (t.complete && is_loaded(t.normal_force, threshold_force)) {
+      neighbour[fill[t.i]++] = t.j;
+      neighbour[fill[t.j]++] = t.i;
     }
 
   // Removing the particles found loose in one pass lowers the counts of their
   // primary neighbours; those that fall below min_contacts are the next
   // pass's loose particles. Layer by layer this is the synchronous recount of
-  // compute rattlers/atom, at the cost of one visit per contact.
+  // compute rattlers/atom, at the cost of one visit per contact (plus one
+  // visit per pass of each contact with a partner elsewhere).
   std::vector<int> remaining = c.loaded_contacts;
   std::vector<int> removed;
   for (int p = 0; p < n; ++p)
     if (c.fraction[p] == Fraction::loose) removed.push_back(p);
+  std::vector<char> partner_loose, counted(contacts.size(), 0);
   while (true) {
     std::vector<int> newly_loose;
+    auto lose_one = [&](int q) {
+      if (c.fraction[q] == Fraction::primary &&
+          --remaining[q] == options.min_contacts - 1)
+        newly_loose.push_back(q);
+    };
     for (int p : removed)
-      for (int e = offset[p]; e < offset[p + 1]; ++e) {
-        const int q = neighbour[e];
-        if (c.fraction[q] == Fraction::primary &&
-            --remaining[q] == options.min_contacts - 1)
-          newly_loose.push_back(q);
-      }
-    if (newly_loose.empty()) return;
+      for (int e = offset[p]; e < offset[p + 1]; ++e) lose_one(neighbour[e]);
+    long long found = 0;
+    if (exchange) {
+      partner_loose.assign(contacts.size(), 0);
+      exchange->partners_loose(c.fraction, partner_loose);
+      if (partner_loose.size() != contacts.size())
+        fail("the partner exchange returned " +
+             std::to_string(partner_loose.size()) + " flags for " +
+             std::to_string(contacts.size()) + " contacts");
+      for (std::size_t k : across)
+        if (partner_loose[k] && !counted[k]) {
+          counted[k] = 1;
+          lose_one(contacts[k].i);
+        }
+      found = exchange->global_sum(static_cast<long long>(newly_loose.size()));
+    } else {
+      found = static_cast<long long>(newly_loose.size());
+    }
+    if (found == 0) return;
     if (c.iterations == options.max_iterations) {
       c.converged = false;
       return;
@@ -128,6 +155,35 @@ void prune_iteratively(const std::vector<ParticleContact>& contacts,
 }
 
 }  // namespace
+
+double normal_force(const Eigen::Vector3d& force_on_particle,
+                    const Eigen::Vector3d& partner_to_particle) {
+  const double length = partner_to_particle.norm();
+  if (!(length > 0.0) || !std::isfinite(length))
+    return std::numeric_limits<double>::quiet_NaN();
+  return force_on_particle.dot(partner_to_particle) / length;
+}
+
+ParticleContact particle_contact(int i, int j,
+                                 const Eigen::Vector3d& force_on_i,
+                                 const Eigen::Vector3d& j_to_i, bool complete) {
+  ParticleContact c;
+  c.i = i;
+  c.j = j;
+  c.normal_force = normal_force(force_on_i, j_to_i);
+  c.normal = -j_to_i;  // branch i -> j
+  c.complete = complete;
+  return c;
+}
+
+WallContact wall_contact(int i, const Eigen::Vector3d& force_on_i,
+                         const Eigen::Vector3d& wall_to_i) {
+  WallContact w;
+  w.i = i;
+  w.normal_force = normal_force(force_on_i, wall_to_i);
+  w.normal = wall_to_i;
+  return w;
+}
 
 double LoadThreshold::force(double mean_normal_force) const {
   return mode == Mode::absolute ? value
@@ -178,10 +234,13 @@ NormalForceSums normal_force_sums(const std::vector<ParticleContact>& contacts,
 Classification classify(int particles,
                         const std::vector<ParticleContact>& contacts,
                         const std::vector<WallContact>& walls,
-                        double threshold_force, const Options& options) {
+                        double threshold_force, const Options& options,
+                        const PartnerExchange* exchange) {
   validate(options);
   check_contacts(particles, contacts, walls, options);
-  if (options.pruning == Pruning::iterate &&
+  if (exchange && (!exchange->partners_loose || !exchange->global_sum))
+    fail("a partner exchange needs both of its functions");
+  if (options.pruning == Pruning::iterate && !exchange &&
       std::any_of(contacts.begin(), contacts.end(),
                   [](const ParticleContact& c) { return !c.complete; }))
     fail("pruning iterate needs the complete contact list (a contact with a "
@@ -205,7 +264,7 @@ Classification classify(int particles,
                                                     : Fraction::loose;
                  });
   if (options.pruning == Pruning::iterate)
-    prune_iteratively(contacts, threshold_force, options, c);
+    prune_iteratively(contacts, threshold_force, options, exchange, c);
   return c;
 }
 

@@ -16,8 +16,9 @@
 //   MPI_Allreduce(sums.data(), sums.size())                   // one call
 //   FabricSummary summary = finalise(sums, interval_diameters);
 //
-// (*) `once` pruning is rank-local; `iterate` needs every contact of every
-// particle it classifies, i.e. a complete (gathered) contact list.
+// (*) `once` pruning is rank-local; `iterate` passes the partners' classes
+// between the ranks through a PartnerExchange (forward communication and a
+// sum over the ranks in the adapter); the loop itself is classify()'s.
 // analyse() runs the three steps on one complete data set.
 //
 // Contacts across ranks follow LIGGGHTS' `newton off` convention: a contact
@@ -31,6 +32,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +47,8 @@ struct Particle {
 
 // Normal forces are signed, compressive positive: an attractive force (a
 // damping artefact at the end of a collision) is never a loaded contact.
+// Build contacts with particle_contact() and wall_contact() below, which take
+// the normal force from normal_force(): one definition for both kinds.
 struct ParticleContact {
   int i = -1;
   int j = -1;               // ignored when !complete (partner on another rank)
@@ -57,9 +61,30 @@ struct ParticleContact {
 struct WallContact {
   int i = -1;
   double normal_force = 0.0;
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // only used when walls
-                                                     // enter the fabric tensor
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // the contact normal
+                            // (wall to particle); its sign is irrelevant
 };
+
+// THE normal force of a contact, particle or wall: the force on the particle
+// projected onto the unit contact normal that points from the partner (the
+// other particle's centre, the wall's contact point) to the particle,
+//   f_n = F . n / |n|,
+// positive when the contact pushes the particle away (compression). A
+// tangential force, however large, adds nothing. A zero or non-finite
+// normal gives NaN, which classify() rejects.
+double normal_force(const Eigen::Vector3d& force_on_particle,
+                    const Eigen::Vector3d& partner_to_particle);
+
+// A contact of particle i with particle j (j: index in the particle list;
+// ignored when !complete), from the force on i and the vector from j's
+// centre to i's centre.
+ParticleContact particle_contact(int i, int j,
+                                 const Eigen::Vector3d& force_on_i,
+                                 const Eigen::Vector3d& j_to_i, bool complete);
+// A contact of particle i with a wall, from the force on i and the vector
+// from the wall's contact point to i's centre.
+WallContact wall_contact(int i, const Eigen::Vector3d& force_on_i,
+                         const Eigen::Vector3d& wall_to_i);
 
 // The load threshold of a loaded contact.
 //   absolute F: F in force units.
@@ -85,10 +110,17 @@ struct LoadThreshold {
 };
 std::string to_string(LoadThreshold t);  // "absolute 5" / "relative 0.001"
 
-// THE definition of a loaded contact, for particle and wall contacts alike.
-// Strict: a contact exactly at the threshold is not loaded.
+// THE definition of a loaded contact, for particle and wall contacts alike:
+// its normal force (see normal_force()) strictly above the threshold force;
+// a contact exactly at the threshold is not loaded.
 inline bool is_loaded(double normal_force, double threshold_force) {
   return normal_force > threshold_force;
+}
+inline bool is_loaded(const Eigen::Vector3d& force_on_particle,
+                      const Eigen::Vector3d& partner_to_particle,
+                      double threshold_force) {
+  return is_loaded(normal_force(force_on_particle, partner_to_particle),
+                   threshold_force);
 }
 
 // once:    the paper's rule, one count of loaded contacts per particle.
@@ -129,12 +161,30 @@ struct Classification {
   int iterations = 0;     // iterate: recount passes that found new loose ones
   bool converged = true;  // iterate: false when max_iterations stopped it
 };
+// `prune iterate` over particles spread across MPI ranks. A contact whose
+// partner is not in this rank's particle list (complete == false) learns the
+// partner's class from `partners_loose`, and each pass ends by the global
+// count of new loose particles, so that every rank runs the same passes and
+// the result is that of one rank holding everything.
+struct PartnerExchange {
+  // Collective, called once per pass on every rank: given the current class
+  // of every particle of this rank, set partner_loose[k] (sized like the
+  // contact list) to 1 for every incomplete contact k whose partner is
+  // loose, 0 otherwise. Entries of complete contacts are ignored.
+  std::function<void(const std::vector<Fraction>& fraction,
+                     std::vector<char>& partner_loose)>
+      partners_loose;
+  // Collective: the sum of `local` over all ranks.
+  std::function<long long(long long local)> global_sum;
+};
+
 // Throws std::invalid_argument on an index out of range, a non-finite force,
-// a zero normal, or an incomplete contact under `iterate`.
+// a zero normal, or an incomplete contact under `iterate` without `exchange`.
 Classification classify(int particles,
                          const std::vector<ParticleContact>& contacts,
                          const std::vector<WallContact>& walls,
-                         double threshold_force, const Options& options);
+                         double threshold_force, const Options& options,
+                         const PartnerExchange* exchange = nullptr);
 
 // Step 3: additive sums. Everything global is a sum over particles or
 // contacts, stored in one array so that a reduction is one MPI_SUM call.

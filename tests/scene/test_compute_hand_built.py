@@ -28,8 +28,8 @@ create_atoms 1 single 0 0 0.00297 units box
 create_atoms 1 single 0 0 0.00495 units box
 {free}
 set atom * diameter 0.002 density 2650
-fix wb all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0 store_force_contact yes
-fix wt all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.00593 store_force_contact yes
+fix wb all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0 store_force_contact_stress yes
+fix wt all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.00593 store_force_contact_stress yes
 {compute}
 fix nve all nve/sphere
 timestep 1e-8
@@ -143,9 +143,9 @@ def main():
 
     # A wall without stored contacts, a non-granular style, no pair style.
     variants = [
-        ("granular wall without store_force_contact",
-         lambda t: t.replace("zplane 0.0 store_force_contact yes", "zplane 0.0"),
-         "store_force_contact yes"),
+        ("granular wall without store_force_contact_stress",
+         lambda t: t.replace("zplane 0.0 store_force_contact_stress yes", "zplane 0.0"),
+         "store_force_contact_stress yes"),
         ("non-granular atom style (checked before the pair style)",
          lambda t: t.replace("atom_style      granular", "atom_style      atomic")
                     .replace("set atom * diameter 0.002 density 2650", "mass * 1")

@@ -39,13 +39,13 @@ fix m_rvd all property/global coefficientRollingViscousDamping peratomtypepair 2
 pair_style      gran model hooke/stiffness tangential history rolling_friction epsd
 pair_coeff      * *
 variable wm string "model hooke/stiffness tangential history rolling_friction epsd"
-fix w_x0  all wall/gran ${{wm}} primitive type 2 xplane 0.0  store_force_contact yes
-fix w_x1  all wall/gran ${{wm}} primitive type 2 xplane {L} store_force_contact yes
-fix w_y0  all wall/gran ${{wm}} primitive type 2 yplane 0.0  store_force_contact yes
-fix w_y1  all wall/gran ${{wm}} primitive type 2 yplane {L} store_force_contact yes
-fix w_top all wall/gran ${{wm}} primitive type 2 zplane {L} store_force_contact yes
+fix w_x0  all wall/gran ${{wm}} primitive type 2 xplane 0.0  store_force_contact_stress yes
+fix w_x1  all wall/gran ${{wm}} primitive type 2 xplane {L} store_force_contact_stress yes
+fix w_y0  all wall/gran ${{wm}} primitive type 2 yplane 0.0  store_force_contact_stress yes
+fix w_y1  all wall/gran ${{wm}} primitive type 2 yplane {L} store_force_contact_stress yes
+fix w_top all wall/gran ${{wm}} primitive type 2 zplane {L} store_force_contact_stress yes
 fix lid   all mesh/surface file {mesh} type 2 scale {L} move {hL} {hL} {zlid}
-fix w_lid all wall/gran ${{wm}} mesh n_meshes 1 meshes lid store_force_contact yes
+fix w_lid all wall/gran ${{wm}} mesh n_meshes 1 meshes lid store_force_contact_stress yes
 compute pf all primary/fabric
 fix integr all nve/sphere
 timestep 1e-9

@@ -4,10 +4,15 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <limits>
 #include <random>
 
 #include "fabric_analysis.h"
+#include "fabric_outputs.h"
+#include "interval_assignment.h"
 
 namespace fabric {
 namespace {
@@ -710,6 +715,288 @@ TEST(Validation, RejectsWhatCannotBeAnalysed) {
   EXPECT_THROW(run({}, {wall(0, 1, Vector3d::Zero())}, bad),
                std::invalid_argument);
   EXPECT_NO_THROW(run({}, {wall(0, 1, Vector3d::Zero())}));
+}
+
+
+// ---------------------------------------------------------------- one normal force
+
+TEST(NormalForce, IsTheForceProjectedOnTheNormalFromPartnerToParticle) {
+  // Pushed away from the partner below: compressive, positive.
+  EXPECT_DOUBLE_EQ(normal_force(Vector3d(0, 0, 5), Vector3d(0, 0, 2)), 5.0);
+  // The normal's length does not matter, its direction does.
+  EXPECT_DOUBLE_EQ(normal_force(Vector3d(3, 0, 4), Vector3d(0, 0, 1e-6)), 4.0);
+  // Pulled towards the partner (a damping force at the end of a collision).
+  EXPECT_DOUBLE_EQ(normal_force(Vector3d(0, 0, -1), Vector3d(0, 0, 1)), -1.0);
+  EXPECT_TRUE(std::isnan(normal_force(Vector3d(1, 0, 0), Vector3d::Zero())));
+}
+
+TEST(NormalForce, WallAndParticleContactsShareOneDefinition) {
+  // A large tangential force with a slightly attractive normal part: |F| is
+  // far above any threshold, F.n is not. Both kinds of contact agree.
+  const Vector3d force(30.0, 0.0, -0.5), normal(0.0, 0.0, 0.002);
+  const WallContact w = wall_contact(0, force, normal);
+  const ParticleContact p = particle_contact(0, 1, force, normal, true);
+  EXPECT_DOUBLE_EQ(w.normal_force, -0.5);
+  EXPECT_DOUBLE_EQ(p.normal_force, -0.5);
+  EXPECT_FALSE(is_loaded(force, normal, 0.0));
+  const Classification c = classify(2, {p}, {w, w, w}, 0.0, kAnyForce);
+  EXPECT_EQ(c.loaded_contacts, (std::vector<int>{0, 0}));
+  // The true normal, not the force direction, enters the fabric tensor.
+  Options o = kAnyForce;
+  o.walls_in_fabric = true;
+  const WallContact lid = wall_contact(0, Vector3d(3, 0, 4), Vector3d(0, 0, 1));
+  EXPECT_DOUBLE_EQ(lid.normal_force, 4.0);
+  const Analysis a = analyse({particle()}, {}, {lid}, 1, o);
+  EXPECT_DOUBLE_EQ(a.summary.fabric_tensor(2, 2), 1.0);
+  EXPECT_DOUBLE_EQ(a.summary.fabric_tensor(0, 0), 0.0);
+  // The particle contact's branch vector points from i to j.
+  EXPECT_DOUBLE_EQ(p.normal.dot(normal), -normal.squaredNorm());
+}
+
+TEST(NormalForce, AZeroNormalIsRejected) {
+  const WallContact w = wall_contact(0, Vector3d(1, 0, 0), Vector3d::Zero());
+  EXPECT_THROW(classify(1, {}, {w}, 0.0, kAnyForce), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------- prune across ranks
+
+// A reusable barrier for the threads that play MPI ranks below.
+class Barrier {
+ public:
+  explicit Barrier(int n) : n_(n) {}
+  void wait() {
+    std::unique_lock<std::mutex> lock(m_);
+    const int generation = generation_;
+    if (++waiting_ == n_) {
+      waiting_ = 0;
+      ++generation_;
+      cv_.notify_all();
+    } else {
+      cv_.wait(lock, [&] { return generation != generation_; });
+    }
+  }
+
+ private:
+  std::mutex m_;
+  std::condition_variable cv_;
+  int n_, waiting_ = 0, generation_ = 0;
+};
+
+// The particles of `s` dealt to `ranks` ranks (p % ranks); a contact between
+// two ranks is listed on both as an incomplete half, with the partner's
+// global index kept for the exchange. Each rank classifies in its own
+// thread with a PartnerExchange over shared memory; the classes put back
+// together must equal the one-rank result.
+struct RankData {
+  std::vector<int> global;  // local -> global particle index
+  std::vector<ParticleContact> contacts;
+  std::vector<int> partner;  // global index of each contact's partner
+  std::vector<WallContact> walls;
+};
+
+Classification classify_on_ranks(int n, const std::vector<ParticleContact>& all,
+                                 const std::vector<WallContact>& all_walls,
+                                 double threshold, const Options& o, int ranks,
+                                 std::vector<Classification>& per_rank,
+                                 std::vector<RankData>& data) {
+  data.assign(ranks, RankData());
+  std::vector<int> local(n);
+  for (int p = 0; p < n; ++p) {
+    local[p] = static_cast<int>(data[p % ranks].global.size());
+    data[p % ranks].global.push_back(p);
+  }
+  for (const ParticleContact& c : all) {
+    // Every end as a half, also when both ends are on one rank (as the
+    // compute passes them); the exchange tells each about its partner.
+    for (int end = 0; end < 2; ++end) {
+      const int me = end == 0 ? c.i : c.j, other = end == 0 ? c.j : c.i;
+      RankData& r = data[me % ranks];
+      r.contacts.push_back({local[me], -1, c.normal_force, c.normal, false});
+      r.partner.push_back(other);
+    }
+  }
+  for (const WallContact& w : all_walls)
+    data[w.i % ranks].walls.push_back({local[w.i], w.normal_force, w.normal});
+
+  std::vector<char> board(n, 0);  // global loose flags, the "ghosts"
+  std::vector<long long> counts(ranks, 0);
+  Barrier barrier(ranks);
+  per_rank.assign(ranks, Classification());
+  std::vector<std::thread> threads;
+  for (int r = 0; r < ranks; ++r)
+    threads.emplace_back([&, r] {
+      const RankData& d = data[r];
+      PartnerExchange x;
+      x.partners_loose = [&](const std::vector<Fraction>& f,
+                             std::vector<char>& partner_loose) {
+        for (std::size_t p = 0; p < d.global.size(); ++p)
+          board[d.global[p]] = f[p] == Fraction::loose;
+        barrier.wait();
+        for (std::size_t k = 0; k < d.contacts.size(); ++k)
+          partner_loose[k] = board[d.partner[k]];
+        barrier.wait();
+      };
+      x.global_sum = [&](long long mine) {
+        counts[r] = mine;
+        barrier.wait();
+        long long sum = 0;
+        for (long long v : counts) sum += v;
+        barrier.wait();
+        return sum;
+      };
+      per_rank[r] = classify(static_cast<int>(d.global.size()), d.contacts,
+                             d.walls, threshold, o, &x);
+    });
+  for (std::thread& t : threads) t.join();
+  Classification joined;
+  joined.fraction.resize(n);
+  joined.loaded_contacts.resize(n);
+  joined.iterations = per_rank[0].iterations;
+  joined.converged = per_rank[0].converged;
+  for (int r = 0; r < ranks; ++r)
+    for (std::size_t p = 0; p < data[r].global.size(); ++p) {
+      joined.fraction[data[r].global[p]] = per_rank[r].fraction[p];
+      joined.loaded_contacts[data[r].global[p]] =
+          per_rank[r].loaded_contacts[p];
+    }
+  return joined;
+}
+
+TEST(PruningAcrossRanks, OneLoopGivesTheOneRankResultOnAnyNumberOfRanks) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 3 + static_cast<int>(rng() % 50);
+    std::uniform_int_distribution<int> pick(0, n - 1);
+    std::uniform_real_distribution<double> force(-0.2, 1.0);
+    std::vector<ParticleContact> contacts;
+    for (int k = 0; k < 2 * n; ++k) {
+      const int i = pick(rng), j = pick(rng);
+      if (i != j) contacts.push_back(contact(i, j, force(rng)));
+    }
+    std::vector<WallContact> walls;
+    for (int k = 0; k < n / 3; ++k) walls.push_back(wall(pick(rng), force(rng)));
+    Options o = with(LoadThreshold::absolute(0.1), Pruning::iterate);
+    o.max_iterations = 1 + trial % 4;  // sometimes stops early
+    const Classification one = classify(n, contacts, walls, 0.1, o);
+    for (int ranks : {1, 2, 3}) {
+      std::vector<Classification> per_rank;
+      std::vector<RankData> data;
+      const Classification got = classify_on_ranks(n, contacts, walls, 0.1, o,
+                                                   ranks, per_rank, data);
+      EXPECT_EQ(got.fraction, one.fraction) << "trial " << trial << ", " << ranks;
+      EXPECT_EQ(got.loaded_contacts, one.loaded_contacts) << "trial " << trial;
+      for (const Classification& c : per_rank) {
+        EXPECT_EQ(c.iterations, one.iterations) << "trial " << trial;
+        EXPECT_EQ(c.converged, one.converged) << "trial " << trial;
+      }
+    }
+  }
+}
+
+TEST(PruningAcrossRanks, ConvergedWhenTheLastAllowedPassFindsTheLastLooseOnes) {
+  // The dangling pair of the scene test: A on a wall with B resting on it,
+  // Z = 2. Once: B loose; pass 1 removes A. A further pass finds nothing, so
+  // max_iterations 1 is enough: converged, 1 pass, on one rank or two.
+  const std::vector<ParticleContact> contacts = {contact(0, 1, 1.0)};
+  const std::vector<WallContact> walls = {wall(0, 1.0)};
+  Options o = with(LoadThreshold::absolute(0), Pruning::iterate);
+  o.min_contacts = 2;
+  o.max_iterations = 1;
+  const Classification one = classify(2, contacts, walls, 0.0, o);
+  EXPECT_EQ(one.fraction, fractions({0, 0}));
+  EXPECT_EQ(one.iterations, 1);
+  EXPECT_TRUE(one.converged);
+  std::vector<Classification> per_rank;
+  std::vector<RankData> data;
+  const Classification two =
+      classify_on_ranks(2, contacts, walls, 0.0, o, 2, per_rank, data);
+  EXPECT_EQ(two.fraction, one.fraction);
+  EXPECT_EQ(per_rank[0].iterations, 1);
+  EXPECT_TRUE(per_rank[0].converged);
+  EXPECT_TRUE(per_rank[1].converged);
+}
+
+TEST(PruningAcrossRanks, AnExchangeNeedsBothFunctions) {
+  PartnerExchange half;
+  half.global_sum = [](long long v) { return v; };
+  EXPECT_THROW(classify(1, {}, {}, 0.0,
+                        with(LoadThreshold::absolute(0), Pruning::iterate),
+                        &half),
+               std::invalid_argument);
+}
+
+// ---------------------------------------------------------------- size intervals
+
+TEST(IntervalAssignment, TheFixIndexDecidesAndZeroFallsBackToTheDiameter) {
+  // Rounding emptied interval 2 (no particle has its diameter), but the fix
+  // still says which interval every particle of its own is in.
+  const auto a = IntervalAssignment::from_ranges(
+      {1.0, INFINITY, 3.0}, {1.0, -INFINITY, 3.2});
+  EXPECT_EQ(a.intervals(), 3);
+  EXPECT_EQ(a.of(1.0, 1.0), 0);
+  EXPECT_EQ(a.of(3.0, 3.1), 2);
+  EXPECT_EQ(a.of(2.0, 5.0), 1);  // the index wins over the diameter
+  // Index 0: an atom the fix did not create, placed by its diameter.
+  EXPECT_EQ(a.of(0.0, 3.1), 2);
+  EXPECT_EQ(a.of(0.0, 1.0 * (1 + 1e-10)), 0);
+  EXPECT_EQ(a.of(0.0, 2.0), -1);  // the empty interval takes nothing
+  EXPECT_EQ(a.of(0.0, 3.3), -1);
+  for (double bad : {4.0, -1.0, 1.5, std::nan("")})
+    EXPECT_THROW(a.of(bad, 1.0), std::invalid_argument) << bad;
+}
+
+TEST(IntervalAssignment, DistinctDiametersAreOneIntervalEach) {
+  const std::vector<double> d = IntervalAssignment::distinct(
+      {0.3, 0.1, 0.2, 0.1 * (1 + 1e-12), 0.3});
+  EXPECT_EQ(d, (std::vector<double>{0.1, 0.2, 0.3}));
+  const auto a = IntervalAssignment::from_ranges(d, d);
+  EXPECT_EQ(a.of_diameter(0.2), 1);
+  EXPECT_EQ(a.of_diameter(0.25), -1);
+  EXPECT_EQ(a.of(0.0, 0.3), 2);
+}
+
+TEST(IntervalAssignment, PsdBoundsGiveABoundToTheFinerInterval) {
+  const auto a = IntervalAssignment::from_bounds({1.0, 2.0, 4.0}, {2.0, 4.0, 8.0});
+  EXPECT_EQ(a.of_diameter(1.5), 0);
+  EXPECT_EQ(a.of_diameter(2.0), 0);
+  EXPECT_EQ(a.of_diameter(2.0 * (1 + 1e-9)), 1);
+  EXPECT_EQ(a.of_diameter(8.0 * (1 + 1e-7)), 2);
+  EXPECT_EQ(a.of_diameter(8.1), -1);
+  EXPECT_EQ(a.of_diameter(0.9), -1);
+  EXPECT_EQ(a.of(3.0, 1.5), 2);  // a stored index still decides
+  EXPECT_THROW(IntervalAssignment::from_bounds({1.0, 2.0}, {2.0}),
+               std::invalid_argument);
+}
+
+// ---------------------------------------------------------------- output layout
+
+TEST(Outputs, EveryVectorEntryAndArrayColumnIsWhereTheTableSaysByName) {
+  FabricSummary s;
+  s.particles = 1; s.loose_particles = 2; s.loose_percent_by_number = 3;
+  s.primary_percent_by_mass = 4; s.coordination = 5;
+  s.primary_coordination = 6;
+  s.overlapping_zone.r1 = 2 * 7.0; s.overlapping_zone.r2 = 2 * 8.0;
+  s.overlapping_zone.mass_percent = 9; s.contacts = 10;
+  s.loaded_contacts = 11; s.mean_normal_force = 12;
+  s.fabric_tensor << 15, 18, 19, 18, 16, 20, 19, 20, 17;
+  s.force_fabric_tensor << 21, 24, 25, 24, 22, 26, 25, 26, 23;
+  DirectionBin b0, b1;
+  b0.contact_fraction = 27; b0.mean_normal_force = 28;
+  b1.contact_fraction = 29; b1.mean_normal_force = 30;
+  s.directions = {b0, b1};
+  const std::vector<double> v = global_vector(s, 13, 14, 2);
+  ASSERT_EQ(static_cast<int>(v.size()), vector_size(2));
+  ASSERT_EQ(v.size(), 30u);
+  for (int e = 0; e < 30; ++e) EXPECT_EQ(v[e], e + 1.0) << "entry " << e + 1;
+  EXPECT_EQ(v[static_cast<int>(VectorEntry::threshold_force)], 13.0);
+
+  IntervalSummary r;
+  r.diameter = 1; r.mass_percent = 2; r.primary_percent_of_interval = 3;
+  r.loose_mass_percent = 4; r.loaded_contacts_per_particle = 5;
+  r.normal_force_per_loaded_contact = 6; r.primary_mass_percent = 7;
+  r.particles = 8; r.measured_diameter = 99;
+  const auto row = interval_row(r);
+  for (int c = 0; c < kArrayColumns; ++c) EXPECT_EQ(row[c], c + 1.0) << c;
 }
 
 }  // namespace

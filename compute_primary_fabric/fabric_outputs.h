@@ -1,0 +1,97 @@
+// The outputs of compute primary/fabric, defined once: the position, name
+// and meaning of every entry of its global vector and of every column of its
+// global array (one row per size interval). The compute fills them from
+// these tables, docs/compute_primary_fabric.md quotes them (a test compares
+// the two) and tools/plot_fabric.py reads them from this file.
+//
+// Format (kept simple for those readers): one X(position, name, "meaning")
+// per line; positions count from 1, as c_ID[I] and c_ID[I][J] do.
+#ifndef FABRIC_FABRIC_OUTPUTS_H
+#define FABRIC_FABRIC_OUTPUTS_H
+
+#include <array>
+#include <vector>
+
+#include "fabric_analysis.h"
+
+// Global vector, entries 1..26; then two entries per direction bin k = 1..M:
+// 26 + 2k - 1 the fraction of the loaded contacts in bin k, 26 + 2k their
+// mean normal force.
+#define FABRIC_VECTOR_ENTRIES(X)                                               \
+  X(1, particles, "particles of the group")                                    \
+  X(2, loose_particles, "loose particles")                                     \
+  X(3, loose_percent_by_number, "loose particles, % of the particles by number") \
+  X(4, primary_percent_by_mass, "primary fabric, % of the group's mass")       \
+  X(5, coordination, "loaded contacts per particle")                           \
+  X(6, primary_coordination, "loaded contacts per primary particle")           \
+  X(7, r1, "r1: radius of the finest interval holding primary fabric")         \
+  X(8, r2, "r2: radius of the coarsest interval holding loose particles")      \
+  X(9, overlapping_zone_percent, "overlapping zone, % of the mass")            \
+  X(10, contacts, "contacts, loaded or not")                                   \
+  X(11, loaded_contacts, "loaded contacts")                                    \
+  X(12, mean_normal_force, "mean normal force of all contacts")                \
+  X(13, threshold_force, "threshold force in use")                             \
+  X(14, prune_passes, "passes of prune iterate that found new loose particles") \
+  X(15, fabric_xx, "fabric tensor F_xx")                                       \
+  X(16, fabric_yy, "fabric tensor F_yy")                                       \
+  X(17, fabric_zz, "fabric tensor F_zz")                                       \
+  X(18, fabric_xy, "fabric tensor F_xy")                                       \
+  X(19, fabric_xz, "fabric tensor F_xz")                                       \
+  X(20, fabric_yz, "fabric tensor F_yz")                                       \
+  X(21, force_fabric_xx, "force-weighted fabric tensor Phi_xx")                \
+  X(22, force_fabric_yy, "force-weighted fabric tensor Phi_yy")                \
+  X(23, force_fabric_zz, "force-weighted fabric tensor Phi_zz")                \
+  X(24, force_fabric_xy, "force-weighted fabric tensor Phi_xy")                \
+  X(25, force_fabric_xz, "force-weighted fabric tensor Phi_xz")                \
+  X(26, force_fabric_yz, "force-weighted fabric tensor Phi_yz")
+
+// Global array: one row per size interval (row 1 the finest), these columns.
+#define FABRIC_ARRAY_COLUMNS(X)                                                \
+  X(1, diameter, "representative diameter of the interval")                    \
+  X(2, mass_percent, "mass of the interval, % of the group's mass")            \
+  X(3, primary_percent_of_interval, "primary fabric, % of the interval's mass") \
+  X(4, loose_mass_percent, "loose mass of the interval, % of the group's mass") \
+  X(5, loaded_contacts_per_particle, "loaded contacts per particle")           \
+  X(6, normal_force_per_loaded_contact, "mean normal force per loaded contact") \
+  X(7, primary_mass_percent, "primary mass of the interval, % of the group's mass") \
+  X(8, particles, "particles in the interval")
+
+namespace fabric {
+
+#define FABRIC_ENUM_ENTRY(position, name, meaning) name,
+enum class VectorEntry { FABRIC_VECTOR_ENTRIES(FABRIC_ENUM_ENTRY) count };
+enum class ArrayColumn { FABRIC_ARRAY_COLUMNS(FABRIC_ENUM_ENTRY) count };
+#undef FABRIC_ENUM_ENTRY
+
+constexpr int kVectorFixedEntries = static_cast<int>(VectorEntry::count);
+constexpr int kArrayColumns = static_cast<int>(ArrayColumn::count);
+
+// The positions written in the tables are the enumerators' order + 1.
+#define FABRIC_CHECK_VECTOR(position, name, meaning)                      \
+  static_assert(static_cast<int>(VectorEntry::name) + 1 == position,      \
+                "fabric_outputs.h: vector entry " #name " out of order");
+#define FABRIC_CHECK_ARRAY(position, name, meaning)                       \
+  static_assert(static_cast<int>(ArrayColumn::name) + 1 == position,      \
+                "fabric_outputs.h: array column " #name " out of order");
+FABRIC_VECTOR_ENTRIES(FABRIC_CHECK_VECTOR)
+FABRIC_ARRAY_COLUMNS(FABRIC_CHECK_ARRAY)
+#undef FABRIC_CHECK_VECTOR
+#undef FABRIC_CHECK_ARRAY
+
+// Size of the global vector with M direction bins.
+inline int vector_size(int direction_bins) {
+  return kVectorFixedEntries + 2 * direction_bins;
+}
+
+// The global vector: the 26 entries, then (fraction, mean normal force) per
+// direction bin, M = direction_bins entries of summary.directions (missing
+// bins are 0).
+std::vector<double> global_vector(const FabricSummary& summary,
+                                  double threshold_force, int prune_passes,
+                                  int direction_bins);
+// One row of the global array.
+std::array<double, kArrayColumns> interval_row(const IntervalSummary& row);
+
+}  // namespace fabric
+
+#endif
