@@ -7,8 +7,15 @@ two loaded contacts, particles and walls), and a free sphere lies beside
 it. With min_contacts 2 the column is primary fabric and the free sphere
 loose; with the default min_contacts 3 all four are loose. The same state
 on 2 ranks, cut through the column (processors 1 1 2), must classify alike.
+
+Every entry of the global vector and of the per-interval array is checked
+through the launcher on a scene whose answer is worked out by hand (RICH
+below), by the names of compute_primary_fabric/fabric_outputs.h; the
+command page's output tables must quote that header.
 """
+import math
 import os
+import re
 
 import scene_util as su
 
@@ -74,6 +81,166 @@ def expect_error(args, chk, what, text, expect):
               ok, "\n".join(err) or res.describe())
 
 
+# The column of three (d 2 mm) between the walls, a tilted pair (d 1 mm)
+# floating free, and a free coarse sphere (d 3 mm): three size intervals.
+# Overlaps: bottom wall 1e-5 m (200 N), column contacts and top wall 2e-5 m
+# (400 N each), the pair 1e-5 m (200 N) along n = (0.48, 0.36, 0.8).
+PAIR_N = (0.48, 0.36, 0.8)
+PAIR_P = (0.005, 0.0, 0.003)
+PAIR_Q = tuple(p + 0.00099 * n for p, n in zip(PAIR_P, PAIR_N))
+RICH_ATOMS = """\
+create_atoms 1 single {px} {py} {pz} units box
+create_atoms 1 single {qx} {qy} {qz} units box
+create_atoms 1 single -0.005 0 0.004 units box""".format(
+    px=su.num(PAIR_P[0]), py=su.num(PAIR_P[1]), pz=su.num(PAIR_P[2]),
+    qx=su.num(PAIR_Q[0]), qy=su.num(PAIR_Q[1]), qz=su.num(PAIR_Q[2]))
+
+
+def rich_expected():
+    """The global vector and array of RICH (min_contacts 2, intervals 3), by
+    name, worked out from the overlaps (kn = 2e7 N/m, hooke/stiffness)."""
+    n = PAIR_N
+    # particle contacts: (force, direction); walls do not enter the tensors
+    contacts = [(400.0, (0, 0, 1)), (400.0, (0, 0, 1)), (200.0, n)]
+    walls = [200.0, 400.0]
+    forces = [f for f, _ in contacts] + walls
+    mean = sum(forces) / len(forces)                    # 320 N
+    mass = {1: 1.0, 2: 8.0, 3: 27.0}                    # per sphere, d^3
+    total = 2 * mass[1] + 3 * mass[2] + mass[3]         # 53
+    v = {"particles": 6, "loose_particles": 3, "loose_percent_by_number": 50,
+         "primary_percent_by_mass": 100 * 3 * mass[2] / total,
+         "coordination": 8 / 6, "primary_coordination": 2,
+         "r1": 0.001, "r2": 0.0015,
+         "overlapping_zone_percent": 100 * (3 * mass[2] + mass[3]) / total,
+         "contacts": 5, "loaded_contacts": 5, "mean_normal_force": mean,
+         "threshold_force": 1e-3 * mean, "prune_passes": 0}
+    axes = {"x": 0, "y": 1, "z": 2}
+    for ab in ("xx", "yy", "zz", "xy", "xz", "yz"):
+        a, b = axes[ab[0]], axes[ab[1]]
+        v["fabric_" + ab] = sum(d[a] * d[b] for _, d in contacts) / len(contacts)
+        v["force_fabric_" + ab] = (sum(f * d[a] * d[b] for f, d in contacts)
+                                   / sum(f for f, _ in contacts))
+    bins = [(0.0, 0.0)] * 9
+    bins[0] = (2 / 3, 400.0)                        # the column, vertical
+    theta = math.degrees(math.acos(n[2]))           # 36.9 degrees: bin 4
+    bins[int(theta // 10)] = (1 / 3, 200.0)
+    rows = [  # diameter mass% primary%ofinterval loose%mass contacts/particle
+              # force/contact primary%mass particles
+        {"diameter": 0.001, "mass_percent": 100 * 2 * mass[1] / total,
+         "primary_percent_of_interval": 0,
+         "loose_mass_percent": 100 * 2 * mass[1] / total,
+         "loaded_contacts_per_particle": 1,
+         "normal_force_per_loaded_contact": 200, "primary_mass_percent": 0,
+         "particles": 2},
+        {"diameter": 0.002, "mass_percent": 100 * 3 * mass[2] / total,
+         "primary_percent_of_interval": 100, "loose_mass_percent": 0,
+         "loaded_contacts_per_particle": 2,
+         "normal_force_per_loaded_contact": (200 + 400 + 4 * 400) / 6,
+         "primary_mass_percent": 100 * 3 * mass[2] / total, "particles": 3},
+        {"diameter": 0.003, "mass_percent": 100 * mass[3] / total,
+         "primary_percent_of_interval": 0,
+         "loose_mass_percent": 100 * mass[3] / total,
+         "loaded_contacts_per_particle": 0,
+         "normal_force_per_loaded_contact": 0, "primary_mass_percent": 0,
+         "particles": 1},
+    ]
+    return v, bins, rows
+
+
+def layout(source):
+    """(vector entries, array columns) of fabric_outputs.h: lists of
+    (position, name, meaning)."""
+    path = os.path.join(source, "compute_primary_fabric", "fabric_outputs.h")
+    with open(path) as f:
+        text = f.read()
+    out = []
+    for macro in ("FABRIC_VECTOR_ENTRIES", "FABRIC_ARRAY_COLUMNS"):
+        body = text.split("#define %s(X)" % macro)[1].split("\n\n")[0]
+        out.append([(int(p), n, m) for p, n, m in
+                    re.findall(r'X\((\d+), (\w+), "([^"]*)"\)', body)])
+    return out
+
+
+def check_outputs(args, chk):
+    """Every global vector entry and array element of RICH, through thermo
+    output at full precision, by the names of fabric_outputs.h."""
+    vec, cols = layout(args.source)
+    chk.check("fabric_outputs.h: 26 vector entries and 8 array columns, "
+              "numbered 1..n in order",
+              [p for p, _, _ in vec] == list(range(1, 27))
+              and [p for p, _, _ in cols] == list(range(1, 9)), (vec, cols))
+    nvec = 26 + 2 * 9
+    fields = ["c_pf[%d]" % i for i in range(1, nvec + 1)]
+    fields += ["c_pf[%d][%d]" % (r, c) for r in range(1, 4) for c in range(1, 9)]
+    text = COLUMN.format(preamble=su.preamble(), free=RICH_ATOMS,
+                         compute="compute pf all primary/fabric min_contacts 2 intervals 3",
+                         dump=os.path.join(args.work, "rich.dump"))
+    text = text.replace("set atom * diameter 0.002 density 2650\n",
+                        "set atom * diameter 0.002 density 2650\n"
+                        "set atom 4*5 diameter 0.001 density 2650\n"
+                        "set atom 6 diameter 0.003 density 2650\n")
+    text = re.sub(r"thermo_style custom .*", "thermo_style custom step " + " ".join(fields), text)
+    text = text.replace("thermo_modify format float %.10g", "thermo_modify format float %.17g")
+    inp = su.write_file(os.path.join(args.work, "in.rich"), text)
+    res = su.run_launcher(args, inp)
+    if not chk.check("the hand-built scene with three intervals runs",
+                     res.returncode == 0 and not res.errors(), res.describe()):
+        return
+    values = None
+    lines = res.output.splitlines()
+    for k, l in enumerate(lines):
+        if l.split()[:1] == ["Step"] and len(l.split()) == 1 + len(fields):
+            values = [float(t) for t in lines[k + 1].split()[1:]]
+    if not chk.check("thermo prints all %d values" % len(fields), values, res.describe()):
+        return
+    want_v, want_bins, want_rows = rich_expected()
+
+    def close(a, b):
+        return abs(a - b) <= 1e-6 * max(1.0, abs(b))
+    wrong = []
+    for pos, name, meaning in vec:
+        got = values[pos - 1]
+        if not close(got, want_v[name]):
+            wrong.append("c_pf[%d] %s (%s): %r, expected %r"
+                         % (pos, name, meaning, got, want_v[name]))
+    chk.check("global vector entries 1-26, by name from fabric_outputs.h",
+              not wrong, "\n".join(wrong))
+    wrong = []
+    for b, (frac, force) in enumerate(want_bins):
+        for k, want in ((26 + 2 * b, frac), (27 + 2 * b, force)):
+            if not close(values[k], want):
+                wrong.append("c_pf[%d] (bin %d): %r, expected %r"
+                             % (k + 1, b + 1, values[k], want))
+    chk.check("direction bins, entries 27-44 (fraction, mean force per bin)",
+              not wrong, "\n".join(wrong))
+    wrong = []
+    for r, row in enumerate(want_rows):
+        for pos, name, meaning in cols:
+            got = values[nvec + 8 * r + pos - 1]
+            if not close(got, row[name]):
+                wrong.append("c_pf[%d][%d] %s: %r, expected %r"
+                             % (r + 1, pos, name, got, row[name]))
+    chk.check("global array, 3 rows x 8 columns, by name from fabric_outputs.h",
+              not wrong, "\n".join(wrong))
+
+
+def check_docs_quote_layout(args, chk):
+    """The command page's output tables name every entry of the header, in
+    its position."""
+    vec, cols = layout(args.source)
+    with open(os.path.join(args.source, "docs", "compute_primary_fabric.md")) as f:
+        doc = f.read()
+    missing = []
+    for table, entries in (("vector", vec), ("array", cols)):
+        for pos, name, meaning in entries:
+            row = "| %d | `%s` | %s |" % (pos, name, meaning)
+            if row not in doc:
+                missing.append("%s: %s" % (table, row))
+    chk.check("docs/compute_primary_fabric.md quotes fabric_outputs.h "
+              "(position, name, meaning of every entry)", not missing,
+              "\n".join(missing))
+
+
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
@@ -117,6 +284,28 @@ def main():
                       "the column stays primary" % (nprocs or 1),
                       itr.get(4, (0, 9))[1] == 0 and itr.get(5, (0, 9))[1] == 0
                       and all(itr[i][1] == 1 for i in (1, 2, 3)), itr)
+
+    check_outputs(args, chk)
+    check_docs_quote_layout(args, chk)
+
+    # prune iterate with max_iterations 1 on the dangling pair: pass 1 makes
+    # A loose, a further pass finds nothing, so it converged (no warning)
+    # and entry 14 counts the one pass; on 1 and 2 ranks alike.
+    for nprocs, proc in ((None, ""), (2, "1 1 2")):
+        name = "dangling_max1_%s" % (nprocs or 1)
+        work = args.work
+        text = COLUMN.format(
+            preamble=su.preamble(processors=proc or None), free=DANGLING,
+            compute="compute pf all primary/fabric min_contacts 2 prune iterate max_iterations 1 intervals 1",
+            dump=os.path.join(work, name + ".dump"))
+        text = re.sub(r"thermo_style custom .*", "thermo_style custom step c_pf[2] c_pf[14]", text)
+        res = su.run_launcher(args, su.write_file(os.path.join(work, "in." + name), text), nprocs=nprocs)
+        m = re.findall(r"^\s*0\s+(\S+)\s+(\S+)\s*$", res.output, re.M)
+        chk.check("prune iterate, max_iterations 1, %d rank(s): converged (no "
+                  "warning), 2 loose, 1 pass" % (nprocs or 1),
+                  res.returncode == 0 and "did not converge" not in res.text
+                  and m and float(m[-1][0]) == 2 and float(m[-1][1]) == 1,
+                  res.describe())
 
     # Bad input: each gives an ERROR naming the value or what is allowed.
     base = "compute pf all primary/fabric min_contacts 2 intervals 1"
