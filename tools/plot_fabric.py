@@ -11,7 +11,9 @@ Reads from each OUTDIR
   fabric_intervals.txt  (required) per-interval table, last block: Figs. 13,
                         14, 17/18, 19
   fabric_global.txt     (optional) the compute's global vector: r1, r2
-                        (entries 7-8, radii), the direction bins (27...)
+                        (radii), the OZ, the fabric tensors and the direction
+                        bins; positions from compute_primary_fabric/
+                        fabric_outputs.h, the compute's own layout table
   contacts_*.vtp        (optional) the force network, used for the direction
                         histogram when fabric_global.txt does not hold the
                         global vector (see below)
@@ -66,10 +68,40 @@ PROG = "plot_fabric.py"
 
 SERIES_COLS = ["step", "KE(J)", "sigma_lid(Pa)", "loose%number",
                "primary%mass", "coordination", "OZ%mass"]
-INTERVAL_COLS = ["row", "diameter(m)", "mass%", "primary%ofinterval",
-                 "loose%mass", "contacts/particle", "force/contact(N)",
-                 "primary%mass", "particles"]
-N_VECTOR_FIXED = 26          # entries before the direction bins
+
+# The compute's output layout, defined once in
+# compute_primary_fabric/fabric_outputs.h: X(position, name, "meaning") lines.
+LAYOUT_HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
+                             "compute_primary_fabric", "fabric_outputs.h")
+
+
+def read_layout(path=LAYOUT_HEADER):
+    """{'vector': [(position, name)], 'array': [(position, name)]} from the
+    header's FABRIC_VECTOR_ENTRIES and FABRIC_ARRAY_COLUMNS tables."""
+    with open(path) as f:
+        text = f.read()
+    out = {}
+    for key, macro in (("vector", "FABRIC_VECTOR_ENTRIES"), ("array", "FABRIC_ARRAY_COLUMNS")):
+        body = text.split("#define %s(X)" % macro)[1].split("\n\n")[0]
+        out[key] = [(int(p), n) for p, n in re.findall(r'X\((\d+), (\w+), "', body)]
+        if [p for p, _ in out[key]] != list(range(1, len(out[key]) + 1)):
+            raise SystemExit("%s: %s is not numbered 1..n" % (path, macro))
+    return out
+
+
+LAYOUT = read_layout()
+VEC = {name: pos - 1 for pos, name in LAYOUT["vector"]}   # 0-based entry
+N_VECTOR_FIXED = len(LAYOUT["vector"])          # entries before the direction bins
+# fabric_intervals.txt columns: "row", then the array's columns under the
+# labels of in.oedometer's title line
+ARRAY_LABELS = {"diameter": "diameter(m)", "mass_percent": "mass%",
+                "primary_percent_of_interval": "primary%ofinterval",
+                "loose_mass_percent": "loose%mass",
+                "loaded_contacts_per_particle": "contacts/particle",
+                "normal_force_per_loaded_contact": "force/contact(N)",
+                "primary_mass_percent": "primary%mass", "particles": "particles"}
+INTERVAL_COLS = ["row"] + [ARRAY_LABELS[name] for _, name in LAYOUT["array"]]
+TENSOR = ("xx", "yy", "zz", "xy", "xz", "yz")
 
 
 class InputError(Exception):
@@ -150,13 +182,14 @@ def read_intervals(path):
     if not blocks:
         raise InputError("%s: no data block (the final analysis has not run yet)" % path)
     step, arr = blocks[-1]
-    if arr.ndim != 2 or arr.shape[0] == 0 or arr.shape[1] < 9:
-        raise InputError("%s: the last block (step %d) does not have the 9 columns %s"
-                         % (path, step, " ".join(INTERVAL_COLS)))
+    ncols = len(INTERVAL_COLS)
+    if arr.ndim != 2 or arr.shape[0] == 0 or arr.shape[1] < ncols:
+        raise InputError("%s: the last block (step %d) does not have the %d columns %s"
+                         % (path, step, ncols, " ".join(INTERVAL_COLS)))
     names = _title_columns(path)
-    if not names or len(names) < 9:
+    if not names or len(names) < ncols:
         names = INTERVAL_COLS
-    d = {names[i]: arr[:, i] for i in range(9)}
+    d = {names[i]: arr[:, i] for i in range(ncols)}
     d["step"] = step
     d["nblocks"] = len(blocks)
     return d
@@ -312,8 +345,9 @@ class Run:
                  "direction histogram from contacts_*.vtp" % gpath)
 
         if self.vector is not None and len(self.vector) >= 9:
-            self.r1, self.r2, self.oz = (float(self.vector[6]), float(self.vector[7]),
-                                         float(self.vector[8]))
+            self.r1, self.r2, self.oz = (float(self.vector[VEC["r1"]]),
+                                         float(self.vector[VEC["r2"]]),
+                                         float(self.vector[VEC["overlapping_zone_percent"]]))
             self.oz_source = "fabric_global.txt"
         else:
             self.r1, self.r2, self.oz = overlap_from_intervals(self.iv)
@@ -325,8 +359,10 @@ class Run:
             m = (len(v) - N_VECTOR_FIXED) // 2
             bins = v[N_VECTOR_FIXED:N_VECTOR_FIXED + 2 * m].reshape(m, 2)
             self.dirs = {"fraction": bins[:, 0], "force": bins[:, 1],
-                         "F": v[14:20], "Phi": v[20:26],
-                         "nloaded": int(v[10]), "source": "fabric_global.txt"}
+                         "F": np.array([v[VEC["fabric_" + t]] for t in TENSOR]),
+                         "Phi": np.array([v[VEC["force_fabric_" + t]] for t in TENSOR]),
+                         "nloaded": int(v[VEC["loaded_contacts"]]),
+                         "source": "fabric_global.txt"}
         else:
             vtp = last_numbered(outdir, "contacts_*.vtp")
             if vtp is None:
