@@ -6,6 +6,7 @@
 #include <mpi.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +22,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "region.h"
+#include "specimen_measure.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -28,9 +30,10 @@ using namespace FixConst;
 namespace {
 
 // What one particle costs: the packer's data on every rank (measured by
-// bench/pack_bench, about 150 B) plus a LIGGGHTS granular atom with its
+// bench/pack_bench: 150-350 B per sphere of the full packing, which holds
+// up to 1.6 times the list) plus a LIGGGHTS granular atom with its
 // neighbour and contact-history data on its owning rank (a generous 2 kB).
-constexpr double kPackerBytes = 200.0, kAtomBytes = 2048.0;
+constexpr double kPackerBytes = 400.0, kAtomBytes = 2048.0;
 
 std::string fmt(const char *f, double v) {
   char b[64];
@@ -52,6 +55,9 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
       fill_pores_(true),
       verbose_(true),
       inserted_(0),
+      start_(fabric::Start::floor),
+      layering_(fabric::PackingSpec().layering),
+      summary_{0, 0, 0, 0, 0, 0},
       interval_(nullptr),
       nmax_(0) {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
@@ -65,6 +71,10 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
+  vector_flag = 1;
+  size_vector = 6;
+  global_freq = 1;
+  extvector = 0;
   grow_arrays(atom->nmax);
   atom->add_callback(0);
   atom->add_callback(1);
@@ -158,13 +168,28 @@ void FixSequentialPack::parse(int narg, char **arg) {
     } else if (strcmp(kw, "fill_pores") == 0) {
       need_value(i, kw, "yes or no");
       fill_pores_ = yesno(arg[i + 1], kw);
+    } else if (strcmp(kw, "layering") == 0) {
+      need_value(i, kw, "a positive number (ln radius)");
+      layering_ = number(arg[i + 1], kw);
+      if (!(layering_ > 0.0))
+        fail("layering " + std::string(arg[i + 1]) +
+             " must be positive (width of the size preference in ln radius)");
+    } else if (strcmp(kw, "start") == 0) {
+      need_value(i, kw, "floor or centre");
+      if (strcmp(arg[i + 1], "floor") == 0)
+        start_ = fabric::Start::floor;
+      else if (strcmp(arg[i + 1], "centre") == 0)
+        start_ = fabric::Start::centre;
+      else
+        fail("start '" + std::string(arg[i + 1]) +
+             "' is unknown: use floor or centre");
     } else if (strcmp(kw, "verbose") == 0) {
       need_value(i, kw, "yes or no");
       verbose_ = yesno(arg[i + 1], kw);
     } else {
       fail("unknown keyword '" + std::string(kw) +
            "': allowed are psd porosity arrangement region seed intervals "
-           "density type fill_pores verbose");
+           "density type fill_pores start layering verbose");
     }
   }
   if (psd_file_.empty()) fail("keyword 'psd FILE' is required");
@@ -267,11 +292,14 @@ void FixSequentialPack::insert_specimen() {
   spec.arrangement = arrangement_;
   spec.seed = static_cast<std::uint64_t>(seed_);
   spec.fill_pores = fill_pores_;
+  spec.start = start_;
+  spec.layering = layering_;
   if (verbose_)
-    spec.progress = [this](long long placed, long long total) {
-      char b[128];
-      snprintf(b, sizeof b, "  sequential/pack: %lld of %lld placed (%.0f%%)",
-               placed, total, 100.0 * placed / total);
+    spec.progress = [this](long long packed, long long total) {
+      char b[160];
+      snprintf(b, sizeof b,
+               "  sequential/pack: %lld grains packed (the list holds %lld)",
+               packed, total);
       message(b);
     };
   // Atoms already in the container (another packing, or this fix under a
@@ -292,8 +320,9 @@ void FixSequentialPack::insert_specimen() {
              static_cast<long long>(inside), region_id_.c_str());
     error->warning(FLERR, w);
   }
-  message("fix sequential/pack: packing " + std::to_string(list_.total()) +
-          " particles (" + fabric::to_string(arrangement_) + ")");
+  message("fix sequential/pack: packing the container full, then choosing " +
+          std::to_string(list_.total()) + " particles (" +
+          fabric::to_string(arrangement_) + ") from it");
   double t0 = MPI_Wtime();
   fabric::PackingResult res;
   try {
@@ -349,24 +378,35 @@ void FixSequentialPack::insert_specimen() {
 
 void FixSequentialPack::print_summary(const fabric::PackingResult &res,
                                       double seconds) {
-  if (comm->me != 0) return;
   const size_t n = intervals_.size();
   double vol = (hi_[0] - lo_[0]) * (hi_[1] - lo_[1]) * (hi_[2] - lo_[2]);
-  double placed_vol = 0.0, inner_vol = 0.0;
   std::vector<double> placed_mass(n, 0.0);
+  double placed_vol = 0.0;
   for (long long i = 0; i < res.placed(); ++i) {
-    double v = 4.0 * M_PI / 3.0 * std::pow(res.radius[i], 3);
+    double v = fabric::sphere_volume(2.0 * res.radius[i]);
     placed_vol += v;
     placed_mass[res.size_class[i]] += v;
-    bool inner = true;  // centre in the central half of each side
-    for (int a = 0; a < 3; ++a) {
-      double q = (res.centre[i][a] - lo_[a]) / (hi_[a] - lo_[a]);
-      inner = inner && q > 0.25 && q < 0.75;
-    }
-    if (inner) inner_vol += v;
+  }
+  // Porosity by volume (exact sphere-box intersection), never by centres:
+  // the interior is the container less one coarsest diameter per wall.
+  fabric::Box box{fabric::Vec3(lo_[0], lo_[1], lo_[2]),
+                  fabric::Vec3(hi_[0], hi_[1], hi_[2])};
+  fabric::PackingMeasure measure(res.centre, res.radius, box);
+  double layer = intervals_.back().d_mean, interior = NAN, wall = NAN;
+  double narrow = std::min({hi_[0] - lo_[0], hi_[1] - lo_[1], hi_[2] - lo_[2]});
+  if (layer < 0.5 * narrow) {
+    interior = measure.interior_porosity(layer);
+    wall = measure.wall_layer_porosity(layer);
   }
   double achieved = 1.0 - placed_vol / vol;
-  double inner = 1.0 - inner_vol / (vol / 8.0);
+  long long not_placed = res.unplaced();
+  summary_[0] = res.placed();
+  summary_[1] = list_.total();
+  summary_[2] = achieved;
+  summary_[3] = interior;
+  summary_[4] = wall;
+  summary_[5] = seconds;
+  if (comm->me != 0) return;
   std::ostringstream s;
   s.unsetf(std::ios::fixed);
   s.precision(5);
@@ -375,58 +415,57 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
     << " points, d10 = " << psd_->d10() << ", d60 = " << psd_->d60()
     << ", Cu = " << psd_->uniformity_coefficient() << "\n"
     << "  container " << region_id_ << ": volume " << vol << ", arrangement "
-    << fabric::to_string(arrangement_) << ", seed " << seed_ << ", "
-    << n << " equal-mass intervals\n"
-    << "  interval   d_mean       target    count   placed  mass%PSD  "
-       "mass%placed\n";
-  long long not_placed = 0;
+    << fabric::to_string(arrangement_) << ", start " << fabric::to_string(start_)
+    << ", seed " << seed_ << ", " << n << " equal-mass intervals\n"
+    << "  interval   d_mean       target    count   placed  not_placed  "
+       "mass%PSD  mass%placed\n";
   for (size_t k = 0; k < n; ++k) {
     char row[160];
-    not_placed += list_.count[k] - res.placed_per_class[k];
-    snprintf(row, sizeof row, "  %8zu %9.4g %12.2f %8lld %8lld %9.2f %12.2f\n",
+    snprintf(row, sizeof row, "  %8zu %9.4g %12.2f %8lld %8lld %11lld %9.2f %12.2f\n",
              k + 1, intervals_[k].d_mean, list_.target_count[k],
-             list_.count[k], res.placed_per_class[k],
+             list_.count[k], res.placed_per_class[k], res.unplaced_per_class[k],
              100.0 * intervals_[k].mass_fraction,
              placed_vol > 0 ? 100.0 * placed_mass[k] / placed_vol : 0.0);
     s << row;
   }
-  char b[512];
+  char b[768];
+  double list_porosity = 1.0 - list_.solid_volume() / vol;
+  double natural = 1.0 - res.packed_volume / vol;
   snprintf(b, sizeof b,
-           "  particles: %lld in the list (rounding gives a list porosity of "
-           "%.5f), %lld placed, %lld not placed\n"
-           "  placed by: first face %lld, trilateration %lld, constriction "
-           "centre %lld, touching two %lld, against a wall %lld; second "
-           "loop %lld\n"
-           "  porosity: target %.4f, achieved %.4f over the container, %.4f "
-           "in its central eighth\n"
+           "  particles: %lld in the list, %lld placed (%lld of them into "
+           "vacancies by the second loop), %lld not placed\n"
+           "  the container packed full holds porosity %.4f; %lld vacancies "
+           "(grain-sized holes) bring it to the target\n"
+           "  porosity by volume: target %.4f, list %.4f (counts rounded), "
+           "achieved %.4f over the container, %.4f in the interior, %.4f in "
+           "the wall layer (%.4g, one coarsest diameter, per wall)\n"
            "  time: %.3f s (%.0f particles per second)\n",
-           list_.total(), 1.0 - list_.solid_volume() / vol, res.placed(),
-           not_placed, res.placed_by[0], res.placed_by[1], res.placed_by[2],
-           res.placed_by[3], res.placed_by[4], res.placed_in_second_loop,
-           porosity_, achieved, inner, seconds,
+           list_.total(), res.placed(), res.placed_in_second_loop, not_placed,
+           natural, res.vacancies, porosity_, list_porosity, achieved,
+           interior, wall, layer, seconds,
            seconds > 0 ? res.placed() / seconds : 0.0);
   s << b;
   message(s.str());
-  if (std::abs(achieved - porosity_) > 0.005) {
+  if (not_placed > 0) {
     snprintf(b, sizeof b,
-             "Fix sequential/pack: target porosity %.4f not reached: achieved "
-             "%.4f with %lld of %lld particles not placed. Raise the porosity "
-             "or use a larger container (the layer along the walls packs "
-             "looser)%s",
-             porosity_, achieved, not_placed, list_.total(),
-             arrangement_ == fabric::Arrangement::layerwise
-                 ? "; arrangement discrete packs denser" : "");
+             "Fix sequential/pack: %lld of %lld particles not placed (see "
+             "not_placed per interval): the container packed full holds "
+             "porosity %.4f, so a target of %.4f leaves no room for them. "
+             "Use a porosity of at least %.3f or a larger container",
+             not_placed, list_.total(), natural, porosity_, natural + 0.01);
     error->warning(FLERR, b);
-  } else if (inner < porosity_ - 0.03) {
+  } else if (std::abs(achieved - porosity_) > 0.005) {
     snprintf(b, sizeof b,
-             "Fix sequential/pack: every particle is placed, but the centre "
-             "of the specimen (porosity %.4f) is denser than the target %.4f "
-             "and its edges looser: the target is looser than this "
-             "arrangement packs; lower the porosity for a uniform specimen",
-             inner, porosity_);
+             "Fix sequential/pack: every particle is placed; the porosity "
+             "%.4f differs from the target %.4f only because the counts per "
+             "interval are rounded (the list's porosity is %.4f): use a "
+             "larger container for a closer match",
+             achieved, porosity_, list_porosity);
     error->warning(FLERR, b);
   }
 }
+
+double FixSequentialPack::compute_vector(int i) { return summary_[i]; }
 
 /* ---- per-atom interval index ---------------------------------------- */
 

@@ -51,6 +51,7 @@ class FixSequentialPack : public Fix {
   int size_restart(int) { return 2; }
   int maxsize_restart() { return 2; }
   double memory_usage();
+  double compute_vector(int i);
 
   // global state: whether the specimen was inserted (no re-insertion after
   // read_restart)
@@ -71,6 +72,11 @@ class FixSequentialPack : public Fix {
   double porosity_, density_;
   int nintervals_, atom_type_, seed_;
   bool fill_pores_, verbose_;
+  fabric::Start start_;
+  double layering_;
+  // Global vector (see the command page): placed, listed, porosity of the
+  // container, of its interior, of its wall layer, seconds.
+  double summary_[6];
   double lo_[3], hi_[3];
   int inserted_;
   double *interval_;  // per atom: interval index 1..N, 0 = not from this fix

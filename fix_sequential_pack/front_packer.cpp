@@ -13,6 +13,22 @@ std::string to_string(Arrangement a) {
   return a == Arrangement::discrete ? "discrete" : "layerwise";
 }
 
+std::string to_string(Start s) { return s == Start::floor ? "floor" : "centre"; }
+
+std::string to_string(Placement p) {
+  static const char* names[kPlacementKinds] = {
+      "first face", "trilateration", "constriction centre", "touching two",
+      "two spheres and a wall", "one sphere and two walls", "corner",
+      "into a vacancy"};
+  return names[static_cast<int>(p)];
+}
+
+long long PackingResult::unplaced() const {
+  long long n = 0;
+  for (long long u : unplaced_per_class) n += u;
+  return n;
+}
+
 namespace {
 
 // SplitMix64: tiny, portable and the same on every platform and rank.
@@ -32,210 +48,141 @@ struct Random {
   }
 };
 
-struct Face {
-  int v[3];  // sphere indices; right-hand normal points to the open side
+// A support of a site: a placed sphere (index >= 0) or a wall (< 0): wall
+// -1 - (2 axis + side), side 0 the low wall of that axis, 1 the high one.
+inline bool is_wall(int s) { return s < 0; }
+inline int wall_code(int axis, int side) { return -1 - (2 * axis + side); }
+inline int wall_axis(int w) { return (-1 - w) / 2; }
+inline int wall_side(int w) { return (-1 - w) % 2; }
+
+// A place for a grain: its three supports (spheres first, then walls) and
+// which of the two mirror solutions. Ordered by key (height or distance from
+// the centre), then by the order sites were opened.
+struct Site {
+  double key;
+  std::uint32_t order;
+  std::int32_t s[3];
+  std::int8_t mirror;  // +1: the positive solution, -1: the negative one
+};
+struct Later {
+  bool operator()(const Site& a, const Site& b) const {
+    return a.key > b.key || (a.key == b.key && a.order > b.order);
+  }
 };
 
-// What the placements on one face share, computed once per face (a DA face
-// is offered up to one size per class in turn): its spheres, its frame and,
-// when first needed, its Fig. 7-8 fallback data.
-struct FaceData {
-  int index;  // in faces_
-  Sphere s[3];
-  // Pore side: the vertex of the face that the face's third sphere was
-  // placed on that is not on this face (-1: none). A sphere put behind the
-  // face most often overlaps it, so it is tested first.
-  int behind = -1;
-  std::optional<FaceFrame> frame;
-  bool fallback_known = false;
-  std::optional<Constriction> con;
-  bool equilateral = false;  // nearly_equilateral(), known once con is
-  bool equilateral_known = false;
-  int pair[3];  // Fig. 8: touch s[pair[0]] and s[pair[1]], towards s[pair[2]]
-};
-
-constexpr double kDrawExponent = 4.0;
-
-// How many of a fixed set of distances lie below x: the count that
-// std::lower_bound gives on the sorted set, without sorting it. The values
-// are grouped into buckets by a function of their value that never
-// decreases, so the values in buckets below x's are all below x, those above
-// all not, and only x's own bucket is compared one by one.
-class CountBelow {
+// The container volume within a distance of its centre, from a lattice of
+// distances grouped into buckets (start centre: the volume the front swept).
+class SweptByDistance {
  public:
-  CountBelow() = default;
-  explicit CountBelow(std::vector<double> v) : n_(v.size()) {
-    double hi = 0.0;
-    bool plain = !v.empty();
-    for (double x : v) {
-      if (!(x >= 0.0) || !std::isfinite(x)) plain = false;
-      hi = std::max(hi, x);
-    }
-    scale_ = kBuckets / hi;
-    if (!plain || !(hi > 0.0) || !std::isfinite(scale_)) {
-      std::sort(v.begin(), v.end());  // anything odd: a plain sorted list
-      sorted_ = std::move(v);
-      return;
-    }
-    start_.assign(kBuckets + 1, 0);
-    for (double x : v) ++start_[bucket(x) + 1];
-    for (size_t b = 0; b < kBuckets; ++b) start_[b + 1] += start_[b];
-    bucketed_.resize(n_);
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (double x : v) bucketed_[fill[bucket(x)]++] = x;
+  SweptByDistance() = default;
+  SweptByDistance(const Vec3& lo, const Vec3& hi) {
+    const int n = 48;
+    Vec3 ext = hi - lo, c = 0.5 * (lo + hi);
+    std::vector<double> d;
+    d.reserve(n * n * n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int k = 0; k < n; ++k)
+          d.push_back((lo + Vec3((i + 0.5) / n * ext[0], (j + 0.5) / n * ext[1],
+                                 (k + 0.5) / n * ext[2]) - c).norm());
+    std::sort(d.begin(), d.end());
+    dist_ = std::move(d);
+    volume_ = ext.prod();
   }
-  std::ptrdiff_t operator()(double x) const {
-    if (start_.empty())
-      return std::lower_bound(sorted_.begin(), sorted_.end(), x) -
-             sorted_.begin();
-    if (!(x > 0.0)) return 0;  // every value is >= 0 (or x is NaN)
-    size_t b = bucket(x);
-    std::ptrdiff_t count = start_[b];
-    for (size_t i = start_[b]; i < start_[b + 1]; ++i)
-      count += bucketed_[i] < x;
-    return count;
-  }
-  size_t size() const { return n_; }
-
- private:
-  static constexpr size_t kBuckets = 8192;
-  size_t bucket(double x) const {  // x >= 0; never decreases with x
-    double t = x * scale_;
-    return t < static_cast<double>(kBuckets - 1) ? static_cast<size_t>(t)
-                                                 : kBuckets - 1;
-  }
-  size_t n_ = 0;
-  double scale_ = 0.0;
-  std::vector<double> bucketed_;      // the values, bucket by bucket
-  std::vector<std::uint32_t> start_;  // first index of each bucket; empty:
-  std::vector<double> sorted_;        // the fallback, sorted
-};
-
-// The open faces, nearest the container centre first: the order of
-// std::priority_queue<Item, std::vector<Item>, std::greater<Item>> (distance,
-// then face index; every item is distinct, so any correct priority queue
-// gives the same sequence). The items are split into shells of distance, a
-// heap each; no shell holds a larger distance than a later one, so the first
-// shell that holds any has the least item on top. The heaps stay small.
-class FrontQueue {
- public:
-  using Item = std::pair<double, size_t>;
-  FrontQueue(double max_dist, size_t shells)
-      : shell_(std::max<size_t>(shells, 1)),
-        per_dist_(static_cast<double>(shell_.size()) / max_dist) {
-    if (!(per_dist_ > 0.0) || !std::isfinite(per_dist_)) per_dist_ = 0.0;
-  }
-  bool empty() const { return size_ == 0; }
-  void push(const Item& it) {
-    size_t s = shell(it.first);
-    shell_[s].push_back(it);
-    std::push_heap(shell_[s].begin(), shell_[s].end(), std::greater<Item>());
-    first_ = std::min(first_, s);
-    ++size_;
-  }
-  const Item& top() {  // not empty()
-    while (shell_[first_].empty()) ++first_;
-    return shell_[first_].front();
-  }
-  void pop() {  // after top()
-    std::vector<Item>& h = shell_[first_];
-    std::pop_heap(h.begin(), h.end(), std::greater<Item>());
-    h.pop_back();
-    --size_;
+  double operator()(double r) const {
+    auto n = std::lower_bound(dist_.begin(), dist_.end(), r) - dist_.begin();
+    return volume_ * static_cast<double>(n) / static_cast<double>(dist_.size());
   }
 
  private:
-  // Never decreases with d (NaN: the last shell).
-  size_t shell(double d) const {
-    double t = d * per_dist_;
-    if (t < 1.0) return 0;  // also d < 0
-    return t < static_cast<double>(shell_.size() - 1) ? static_cast<size_t>(t)
-                                                      : shell_.size() - 1;
-  }
-  std::vector<std::vector<Item>> shell_;  // a heap each
-  double per_dist_;
-  size_t first_ = 0;  // no shell before it holds an item
-  size_t size_ = 0;
+  std::vector<double> dist_;
+  double volume_ = 0.0;
 };
 
-enum FaceState : std::uint8_t { kOpen, kFilled, kFailed };
+constexpr long long kDeckExtra = 2;
+// How much faster than by number the coarsest size is drawn (x^2 between).
+constexpr double kCoarseBoost = 0.6;
+// LA: how strongly a size that falls behind the deck is favoured: e^(20 x)
+// for a size x (as a share of its deck) behind the deck as a whole.
+constexpr double kCatchUp = 100.0;
+// Cells of the vacancy choice: about this many coarsest diameters wide.
+constexpr double kCellDiameters = 1.0;
+// The vacancy choice of a coarse class: candidates weighed per vacancy.
+constexpr int kVacancyCandidates = 24;
 
-// Which side of a face the sphere goes to.
-enum class Side { open, pore };
-
-class FrontPacker {
+class Packer {
  public:
-  explicit FrontPacker(const PackingSpec& spec);
+  explicit Packer(const PackingSpec& spec);
   PackingResult run();
 
  private:
-  void place_first_face();
-  bool fill_face(int face, Side side);
-  bool try_place(const Face& f, FaceData& d, int size_class, Side side);
-  bool try_fallback(const Face& f, FaceData& d, int size_class, Side side);
-  bool place_if_free(const Face& f, const FaceData& d, const Vec3& c,
-                     int size_class, Placement how, Side side);
-  void add_sphere(const Vec3& c, int size_class, Placement how,
-                  int parent_face);
-  void open_faces(const Face& parent, int p, Placement how);
+  std::optional<Vec3> position(const Site& s, double r, Placement& how) const;
   bool inside(const Vec3& c, double r) const;
-  std::optional<Vec3> against_wall(const Sphere* s, const Vec3& cand,
-                                   double r) const;
-  int largest_left();
-  int take_random_left(Random& rng);
+  double key_of(const Vec3& c) const;
+  double wall_gap(int w, const Vec3& c, double r) const;
+  Sphere support(int i) const { return grid_.sphere(i); }
+  void open_sites(int p);
+  void add_site(int a, int b, int c);
+  void push(Site s, int level);
+  bool pop_lowest(int min_level, Site& s, int& level);
+  int choose_grain(const Site& s, int level);
+  int draw_by_number();
+  int place(const Vec3& c, int k, Placement how);
+  bool try_site(const Site& s, int k);
+  void first_face();
+  void choose_vacancies();
+  void second_loop();
   void report_progress();
-  void skip_class(int k);
-  bool behind_target();
-  double swept_volume(double radius) const;
 
   const PackingSpec& spec_;
   SphereGrid grid_;
-  std::vector<Face> faces_;
-  std::vector<std::uint8_t> state_;
-  std::vector<long long> left_;
-  std::vector<int> by_size_;  // size classes, largest first
-  std::vector<size_t> smaller_from_;  // per class: first smaller in by_size_
-  size_t first_left_ = 0;     // by_size_[first_left_] is the largest left
-  long long total_left_ = 0, total_ = 0, next_report_ = 0;
-  PackingResult res_;
-  Random rng_;
+  int nclass_ = 0;
+  std::vector<int> asc_;    // classes by radius, finest first
+  std::vector<int> rank_;   // class -> its position in asc_
+  std::vector<int> below_;  // rank -> largest rank of a smaller radius, or -1
+  std::vector<double> log_radius_, volume_;
+  std::vector<std::vector<Site>> heap_;  // per rank: sites for sizes <= it
+  // The grains come from decks, each deck the particle list once, shuffled
+  // by drawing without replacement; the next deck opens when one is spent.
+  std::vector<long long> deck_, deck_size_;
+  long long deck_total_ = 0;
+  // Per rank: how much faster than by number a size is drawn. The coarsest
+  // are drawn up to 30 % faster, so a deck's coarse grains are placed before
+  // the container is nearly full, where they would find no room.
+  std::vector<double> boost_;
+
+  // DA: no open site takes a size of this rank or above (until a site opens
+  // for one); such grains are not drawn, they stay in the deck.
+  int blocked_ = 0;
+  void new_deck();
+  long long total_ = 0, next_report_ = 0;
+  std::vector<std::uint8_t> vacant_;     // per placed sphere: 1 a vacancy
+  std::vector<Placement> how_;           // per placed sphere
+  std::vector<long long> missing_;       // per class: list count not placed
+  Random rng_, vacancy_rng_;
   Vec3 centre_;
-  double reach_ = 0.0;          // distance of the farthest face taken so far
-  double placed_volume_ = 0.0;
-  double target_density_ = 0.0;  // solid volume of the list / container
-  double margin_ = 0.0;          // volume-weighted mean radius of the list
-  CountBelow sample_dist_;  // centre distances of a lattice
-  std::vector<double> draw_weight_, volume_;  // per class
-  // take_random_left(): left_ * draw_weight_ per class in by_size_ order and
-  // their sum, valid while !draw_stale_ (set whenever left_ changes)
-  std::vector<double> draw_left_;
-  double draw_total_ = 0.0;
-  bool draw_stale_ = true;
-  // Where to look first for an overlap: the sphere that last stopped a
-  // placement, and per sphere, the last one that the full search found
-  // stopping a placement on a face of that sphere.
-  int blocker_ = -1;
-  std::vector<int32_t> vertex_blocker_;
-  std::vector<int32_t> parent_face_;  // per sphere: the face it went on
-  // swept_volume(reach_ + margin_) for reach_ == swept_for_reach_
-  double swept_for_reach_ = std::numeric_limits<double>::quiet_NaN();
-  double swept_ = 0.0;
+  double gap_ = 0.0;             // supports of a site lie within this gap
+  SweptByDistance swept_by_distance_;
+  std::uint32_t next_order_ = 0;
+  std::vector<int> near_;        // scratch: neighbours of a new sphere
+  std::size_t peak_sites_ = 0, live_sites_ = 0;
+  PackingResult res_;
 };
 
-FrontPacker::FrontPacker(const PackingSpec& spec)
+Packer::Packer(const PackingSpec& spec)
     : spec_(spec),
       grid_(spec.lo, spec.hi, spec.radius,
-            // a few cells per sphere is plenty; never less than 1 Mi cells
             std::max<std::size_t>(1u << 20, 4 * [&] {
               long long n = 0;
-              for (long long c : spec.count) n += c;
+              for (long long c : spec.count) n += std::max(0LL, c);
               return static_cast<std::size_t>(n);
             }())),
-      left_(spec.count),
-      rng_{spec.seed ^ 0x5eedULL} {
+      rng_{spec.seed ^ 0x5eedULL},
+      vacancy_rng_{spec.seed ^ 0x7ac4ULL} {
   if (spec.radius.empty() || spec.radius.size() != spec.count.size())
     throw std::invalid_argument("packing needs one count per size class");
-  for (size_t k = 0; k < spec.radius.size(); ++k) {
+  nclass_ = static_cast<int>(spec.radius.size());
+  for (int k = 0; k < nclass_; ++k) {
     if (!(spec.radius[k] > 0.0) || !std::isfinite(spec.radius[k]))
       throw std::invalid_argument("sphere radius must be positive and finite");
     if (spec.count[k] < 0)
@@ -251,93 +198,54 @@ FrontPacker::FrontPacker(const PackingSpec& spec)
   if (total_ > INT32_MAX / 4)
     throw std::invalid_argument("packing supports at most " +
                                 std::to_string(INT32_MAX / 4) + " spheres");
-  total_left_ = total_;
   centre_ = 0.5 * (spec.lo + spec.hi);
-  for (double r : spec.radius) {
-    draw_weight_.push_back(std::pow(r, kDrawExponent));
-    volume_.push_back(4.0 / 3.0 * M_PI * r * r * r);
-  }
-  double vol = 0.0, r4 = 0.0;
-  for (size_t k = 0; k < spec.radius.size(); ++k) {
-    double r = spec.radius[k];
-    vol += spec.count[k] * 4.0 / 3.0 * M_PI * r * r * r;
-    r4 += spec.count[k] * r * r * r * r;
-  }
-  margin_ = r4 / (vol * 3.0 / (4.0 * M_PI));
-  target_density_ = vol / (spec.hi - spec.lo).prod();
-  // The container volume within a distance of its centre, from a lattice.
-  const int n = 48;
-  Vec3 ext = spec.hi - spec.lo;
-  // Per axis, the lattice point minus the centre (q - centre_ of the point
-  // q = lo + ((i + 0.5) / n * ext[0], ...), a component at a time).
-  double offset[3][n];
-  for (int a = 0; a < 3; ++a)
-    for (int i = 0; i < n; ++i)
-      offset[a][i] = (spec.lo[a] + (i + 0.5) / n * ext[a]) - centre_[a];
-  std::vector<double> dist;
-  dist.reserve(n * n * n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k)
-        dist.push_back(Vec3(offset[0][i], offset[1][j], offset[2][k]).norm());
-  sample_dist_ = CountBelow(std::move(dist));
-  by_size_.resize(spec.radius.size());
-  for (size_t k = 0; k < by_size_.size(); ++k) by_size_[k] = static_cast<int>(k);
-  std::stable_sort(by_size_.begin(), by_size_.end(), [&](int a, int b) {
-    return spec.radius[a] > spec.radius[b];
+  asc_.resize(nclass_);
+  for (int k = 0; k < nclass_; ++k) asc_[k] = k;
+  std::stable_sort(asc_.begin(), asc_.end(), [&](int a, int b) {
+    return spec.radius[a] < spec.radius[b];
   });
-  draw_left_.assign(by_size_.size(), 0.0);
-  smaller_from_.assign(spec.radius.size(), by_size_.size());
-  for (size_t k = 0; k < spec.radius.size(); ++k)
-    for (size_t i = 0; i < by_size_.size(); ++i)
-      if (spec.radius[by_size_[i]] < spec.radius[k]) {
-        smaller_from_[k] = i;
-        break;
-      }
-  res_.placed_per_class.assign(spec.radius.size(), 0);
-  res_.skipped_per_class.assign(spec.radius.size(), 0);
-  grid_.reserve(total_);
-  vertex_blocker_.reserve(total_);
-  parent_face_.reserve(total_);
-  res_.centre.reserve(total_);
-  res_.radius.reserve(total_);
-  res_.size_class.reserve(total_);
-  res_.placement.reserve(total_);
-  faces_.reserve(3 * total_ + 2);
-  state_.reserve(3 * total_ + 2);
-}
-
-int FrontPacker::largest_left() {
-  while (first_left_ < by_size_.size() && left_[by_size_[first_left_]] == 0)
-    ++first_left_;
-  return first_left_ < by_size_.size() ? by_size_[first_left_] : -1;
-}
-
-int FrontPacker::take_random_left(Random& rng) {
-  // Weighted by the volume left in each class, so every class advances at
-  // its mass share and the specimen is homogeneous by mass. The weights and
-  // their total (summed in this order) are kept until a count changes.
-  if (draw_stale_) {
-    double total = 0.0;
-    for (size_t i = 0; i < by_size_.size(); ++i) {
-      int k = by_size_[i];
-      draw_left_[i] = left_[k] * draw_weight_[k];
-      total += draw_left_[i];
-    }
-    draw_total_ = total;
-    draw_stale_ = false;
+  rank_.resize(nclass_);
+  below_.assign(nclass_, -1);
+  for (int i = 0; i < nclass_; ++i) {
+    rank_[asc_[i]] = i;
+    if (i > 0)
+      below_[i] = spec.radius[asc_[i - 1]] < spec.radius[asc_[i]]
+                      ? i - 1 : below_[i - 1];
   }
-  double pick = rng.uniform() * draw_total_;
-  for (size_t i = 0; i < by_size_.size(); ++i) {
-    int k = by_size_[i];
-    double w = draw_left_[i];
-    if (left_[k] > 0 && pick < w) return k;
-    pick -= w;
+  double rmin = std::numeric_limits<double>::infinity();
+  double rmax = 0.0;
+  for (int k = 0; k < nclass_; ++k) {
+    double r = spec.radius[k];
+    log_radius_.push_back(std::log(r));
+    volume_.push_back(4.0 / 3.0 * M_PI * r * r * r);
+    if (spec.count[k] > 0) rmin = std::min(rmin, r), rmax = std::max(rmax, r);
   }
-  return largest_left();
+  for (int a = 0; a < 3; ++a)
+    if (spec.hi[a] - spec.lo[a] < 2.0 * rmax)
+      throw std::invalid_argument(
+          "container is narrower than the largest sphere (diameter " +
+          std::to_string(2.0 * rmax) + ")");
+  // Supports of a site lie within a finest diameter of each other: every
+  // pocket a grain can sit in, and few enough triples to stay fast.
+  gap_ = 2.0 * rmin;
+  heap_.resize(nclass_);
+  // x: where a size lies between the finest and the coarsest, in ln(r).
+  const double span = std::log(rmax / rmin);
+  for (int i = 0; i < nclass_; ++i) {
+    double x = span > 0.0
+        ? std::clamp(std::log(spec.radius[asc_[i]] / rmin) / span, 0.0, 1.0)
+        : 0.0;
+    boost_.push_back(1.0 + kCoarseBoost * x * x);
+  }
+  res_.placed_per_class.assign(nclass_, 0);
+  missing_.assign(nclass_, 0);
+  deck_.assign(nclass_, 0);
+  deck_size_.assign(nclass_, 0);
+  if (spec.start == Start::centre)
+    swept_by_distance_ = SweptByDistance(spec.lo, spec.hi);
 }
 
-bool FrontPacker::inside(const Vec3& c, double r) const {
+bool Packer::inside(const Vec3& c, double r) const {
   double slack = spec_.overlap_tolerance * r;
   for (int a = 0; a < 3; ++a)
     if (c[a] - r < spec_.lo[a] - slack || c[a] + r > spec_.hi[a] + slack)
@@ -345,45 +253,287 @@ bool FrontPacker::inside(const Vec3& c, double r) const {
   return true;
 }
 
-void FrontPacker::add_sphere(const Vec3& c, int k, Placement how,
-                             int parent_face) {
-  grid_.insert(c, k);
-  vertex_blocker_.push_back(-1);
-  parent_face_.push_back(parent_face);
-  res_.centre.push_back(c);
-  res_.radius.push_back(spec_.radius[k]);
-  res_.size_class.push_back(k);
-  res_.placement.push_back(how);
-  ++res_.placed_per_class[k];
-  ++res_.placed_by[static_cast<int>(how)];
-  --left_[k];
-  --total_left_;
-  draw_stale_ = true;
-  placed_volume_ += volume_[k];
+double Packer::key_of(const Vec3& c) const {
+  return spec_.start == Start::floor ? c[2] - spec_.lo[2]
+                                     : (c - centre_).norm();
 }
 
-void FrontPacker::place_first_face() {
-  Random rng{spec_.seed};
-  // Section 2.2: the largest sphere first, at the container centre; LA takes
-  // the next largest as companions, DA two drawn at random by number.
-  int k[3];
-  k[0] = largest_left();
-  --left_[k[0]], --total_left_;
-  draw_stale_ = true;
-  for (int i = 1; i < 3; ++i) {
-    k[i] = spec_.arrangement == Arrangement::layerwise ? largest_left()
-                                                        : take_random_left(rng);
-    --left_[k[i]], --total_left_;
-    draw_stale_ = true;
-  }
-  for (int i = 0; i < 3; ++i) ++left_[k[i]], ++total_left_;
-  draw_stale_ = true;
+// Distance between a sphere's surface and a wall.
+double Packer::wall_gap(int w, const Vec3& c, double r) const {
+  int a = wall_axis(w);
+  return wall_side(w) == 0 ? c[a] - r - spec_.lo[a] : spec_.hi[a] - c[a] - r;
+}
 
+std::optional<Vec3> Packer::position(const Site& s, double r,
+                                     Placement& how) const {
+  int spheres = 0;
+  while (spheres < 3 && !is_wall(s.s[spheres])) ++spheres;
+  auto pick = [&](const std::optional<MirrorPair>& m) -> std::optional<Vec3> {
+    if (!m) return std::nullopt;
+    return s.mirror > 0 ? m->positive : m->negative;
+  };
+  auto plane = [&](int w, Vec3& point, Vec3& inward) {
+    int a = wall_axis(w);
+    point = wall_side(w) == 0 ? spec_.lo : spec_.hi;
+    inward = Vec3::Zero();
+    inward[a] = wall_side(w) == 0 ? 1.0 : -1.0;
+  };
+  std::optional<Vec3> c;
+  if (spheres == 3) {
+    Sphere a = support(s.s[0]), b = support(s.s[1]), d = support(s.s[2]);
+    auto frame = face_frame(a.centre, b.centre, d.centre);
+    if (!frame) return std::nullopt;
+    c = pick(trilaterate(*frame, a.radius, b.radius, d.radius, r));
+    how = Placement::trilateration;
+    if (!c && s.mirror > 0) {
+      // Figs. 7-8: a grain too small to touch all three lies in the face
+      // plane: at the constriction centre of a nearly equal-sided face,
+      // else touching two face spheres (DA the two larger, LA the two
+      // smaller).
+      auto con = constriction(*frame, a.radius, b.radius, d.radius);
+      if (con && r <= con->radius &&
+          nearly_equilateral(a.centre, b.centre, d.centre,
+                             spec_.equilateral_tolerance)) {
+        c = con->centre;
+        how = Placement::constriction;
+      } else {
+        Sphere f[3] = {a, b, d};
+        std::sort(f, f + 3, [](const Sphere& x, const Sphere& y) {
+          return x.radius > y.radius;
+        });
+        if (spec_.arrangement == Arrangement::layerwise) std::swap(f[0], f[2]);
+        c = touch_two_in_plane(f[0], f[1], f[2].centre, r);
+        how = Placement::touch_two;
+      }
+    }
+  } else if (spheres == 2) {
+    Vec3 point, inward;
+    plane(s.s[2], point, inward);
+    c = pick(touch_two_and_plane(support(s.s[0]), support(s.s[1]), point,
+                                 inward, r));
+    how = Placement::wall;
+  } else if (spheres == 1) {
+    int w1 = s.s[1], w2 = s.s[2];
+    int a1 = wall_axis(w1), a2 = wall_axis(w2);
+    double p1 = wall_side(w1) == 0 ? spec_.lo[a1] : spec_.hi[a1];
+    double p2 = wall_side(w2) == 0 ? spec_.lo[a2] : spec_.hi[a2];
+    c = pick(touch_one_and_two_planes(support(s.s[0]), a1, p1,
+                                      wall_side(w1) == 0 ? 1.0 : -1.0, a2, p2,
+                                      wall_side(w2) == 0 ? 1.0 : -1.0, r));
+    how = Placement::edge;
+  } else {
+    Vec3 q;
+    for (int i = 0; i < 3; ++i) {
+      int a = wall_axis(s.s[i]);
+      q[a] = wall_side(s.s[i]) == 0 ? spec_.lo[a] + r : spec_.hi[a] - r;
+    }
+    c = q;
+    how = Placement::corner;
+  }
+  if (!c || !c->allFinite() || !inside(*c, r)) return std::nullopt;
+  return c;
+}
+
+// A site goes to the heap of the largest size it may take, keyed by the
+// position of a grain of that size; a site that holds no grain of that size
+// (it would cross a wall, or is too small for Eq. 1) tries the next smaller.
+void Packer::push(Site s, int level) {
+  for (; level >= 0; level = below_[level]) {
+    Placement how;
+    auto c = position(s, spec_.radius[asc_[level]], how);
+    if (!c) continue;
+    s.key = key_of(*c);
+    heap_[level].push_back(s);
+    blocked_ = std::max(blocked_, level + 1);
+    std::push_heap(heap_[level].begin(), heap_[level].end(), Later());
+    peak_sites_ = std::max(peak_sites_, ++live_sites_);
+    return;
+  }
+}
+
+bool Packer::pop_lowest(int min_level, Site& s, int& level) {
+  level = -1;
+  for (int l = std::max(min_level, 0); l < nclass_; ++l)
+    if (!heap_[l].empty() &&
+        (level < 0 || Later()(heap_[level].front(), heap_[l].front())))
+      level = l;
+  if (level < 0) return false;
+  std::pop_heap(heap_[level].begin(), heap_[level].end(), Later());
+  s = heap_[level].back();
+  heap_[level].pop_back();
+  --live_sites_;
+  return true;
+}
+
+void Packer::add_site(int a, int b, int c) {
+  for (std::int8_t mirror : {std::int8_t{1}, std::int8_t{-1}}) {
+    Site s{0.0, next_order_++, {a, b, c}, mirror};
+    push(s, nclass_ - 1);
+    ++res_.sites;
+  }
+}
+
+// The sites of a new sphere p: p with every pair of spheres or walls within
+// the gap of p and of each other. Triples of earlier spheres were opened by
+// the last of them, so each triple is opened once.
+void Packer::open_sites(int p) {
+  const Vec3 cp = grid_.centre(p);
+  const double rp = grid_.radius(p);
+  near_.clear();
+  grid_.within_gap(cp, rp, gap_, near_);
+  near_.erase(std::remove(near_.begin(), near_.end(), p), near_.end());
+  std::sort(near_.begin(), near_.end());
+  int walls[6], nw = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side)
+      if (wall_gap(wall_code(a, side), cp, rp) < gap_)
+        walls[nw++] = wall_code(a, side);
+  for (size_t i = 0; i < near_.size(); ++i) {
+    Sphere qi = grid_.sphere(near_[i]);
+    for (size_t j = i + 1; j < near_.size(); ++j) {
+      Sphere qj = grid_.sphere(near_[j]);
+      double reach = qi.radius + qj.radius + gap_;
+      if ((qi.centre - qj.centre).squaredNorm() < reach * reach)
+        add_site(p, near_[i], near_[j]);
+    }
+    for (int w = 0; w < nw; ++w)
+      if (wall_gap(walls[w], qi.centre, qi.radius) < gap_)
+        add_site(p, near_[i], walls[w]);
+  }
+  for (int w1 = 0; w1 < nw; ++w1)
+    for (int w2 = w1 + 1; w2 < nw; ++w2)
+      if (wall_axis(walls[w1]) != wall_axis(walls[w2]))
+        add_site(p, walls[w1], walls[w2]);
+}
+
+// A deck is the particle list plus two spheres of each size: the last
+// coarse grains drawn may find no room under the lid, and the choice of the
+// specimen's spheres then still finds every sphere of the list.
+void Packer::new_deck() {
+  const bool fresh = deck_total_ == 0;
+  for (int k = 0; k < nclass_; ++k) {
+    long long n = spec_.count[k] > 0 ? spec_.count[k] + kDeckExtra : 0;
+    if (fresh) deck_size_[k] = 0;
+    deck_size_[k] += n;
+    deck_[k] += n;
+    deck_total_ += n;
+  }
+}
+
+// DA: the next grain, drawn by number from the deck among the sizes some
+// open site may take (-1: none).
+int Packer::draw_by_number() {
+  double w[100];
+  for (int pass = 0; pass < 2; ++pass) {
+    double total = 0.0;
+    for (int i = 0; i < blocked_; ++i) {
+      int k = asc_[i];
+      w[i] = static_cast<double>(deck_[k]) * boost_[i];
+      total += w[i];
+    }
+    if (total > 0.0) {
+      double pick = rng_.uniform() * total;
+      int i = 0;
+      for (; i < blocked_ - 1; ++i) {
+        if (w[i] > 0.0 && pick < w[i]) break;
+        pick -= w[i];
+      }
+      while (w[i] == 0.0) --i;
+      int k = asc_[i];
+      --deck_[k], --deck_total_;
+      return k;
+    }
+    new_deck();  // this one holds no size that fits: the next deck opens
+  }
+  return -1;
+}
+
+// LA: the grain a site is offered, drawn by number from the deck among the
+// sizes it may take, weighted towards the sizes of the spheres it touches
+// ("similar radii have priority"): exp(-(ln r - ln r_site)^2 / (2 w^2)),
+// w = spec.layering; -1 when the deck holds none of those sizes.
+int Packer::choose_grain(const Site& s, int level) {
+  if (deck_total_ == 0) new_deck();
+  double log_site = 0.0;
+  int spheres = 0;
+  for (int j = 0; j < 3; ++j)
+    if (!is_wall(s.s[j])) log_site += std::log(grid_.radius(s.s[j])), ++spheres;
+  if (spheres > 0) log_site /= spheres;
+  const double inv = 1.0 / (2.0 * spec_.layering * spec_.layering);
+  // A size that falls behind the deck as a whole is offered more, so the
+  // preference for like sizes never starves a size (the coarsest above all).
+  double spent = 0.0, size = 0.0;
+  for (int k = 0; k < nclass_; ++k)
+    spent += static_cast<double>(deck_size_[k] - deck_[k]), size += deck_size_[k];
+  spent /= size;
+  double w[100], total = 0.0;
+  for (int i = 0; i <= level; ++i) {
+    int k = asc_[i];
+    double d = log_radius_[k] - log_site;
+    // On schedule, a size has spent the deck's share times its boost: the
+    // coarsest finish their deck early, before the container is nearly full.
+    double behind = deck_size_[k] > 0
+        ? std::min(1.0, spent * boost_[i]) -
+              static_cast<double>(deck_size_[k] - deck_[k]) / deck_size_[k]
+        : 0.0;
+    w[i] = static_cast<double>(deck_[k]) *
+           std::exp(kCatchUp * behind - (spheres > 0 ? d * d * inv : 0.0));
+    total += w[i];
+  }
+  if (!(total > 0.0)) return -1;
+  double pick = rng_.uniform() * total;
+  int i = 0;
+  for (; i < level; ++i) {
+    if (w[i] > 0.0 && pick < w[i]) break;
+    pick -= w[i];
+  }
+  while (w[i] == 0.0) --i;
+  int k = asc_[i];
+  --deck_[k], --deck_total_;
+  return k;
+}
+
+int Packer::place(const Vec3& c, int k, Placement how) {
+  int p = grid_.insert(c, k);
+  vacant_.push_back(0);
+  how_.push_back(how);
+  report_progress();
+  return p;
+}
+
+// Offers grain k to site s; places it if it fits.
+bool Packer::try_site(const Site& s, int k) {
+  ++res_.attempts;
+  const double r = spec_.radius[k];
+  Placement how;
+  auto c = position(s, r, how);
+  if (!c || grid_.overlaps(*c, r, spec_.overlap_tolerance)) return false;
+  open_sites(place(*c, k, how));
+  return true;
+}
+
+// Start centre (section 2.2): the largest sphere at the container centre and
+// two companions (LA the next largest, DA drawn by number) around it.
+void Packer::first_face() {
+  Random rng{spec_.seed};
+  int k[3];
+  for (int i = 0; i < 3; ++i) {
+    // The largest sphere first; LA the next largest, DA drawn by number.
+    if (i == 0 || spec_.arrangement == Arrangement::layerwise) {
+      if (deck_total_ == 0) new_deck();
+      int r = nclass_ - 1;
+      while (deck_[asc_[r]] == 0) --r;
+      k[i] = asc_[r];
+      --deck_[k[i]], --deck_total_;
+    } else {
+      blocked_ = nclass_;
+      k[i] = draw_by_number();
+    }
+  }
   double r0 = spec_.radius[k[0]], r1 = spec_.radius[k[1]],
          r2 = spec_.radius[k[2]];
-  Vec3 c0 = 0.5 * (spec_.lo + spec_.hi), c1;
+  Vec3 c0 = centre_, c1;
   std::optional<Vec3> c2;
-  // A random orientation; in a tight container, the first of a few that fits.
   for (int attempt = 0; attempt < 200; ++attempt) {
     Vec3 u = rng.unit_vector();
     c1 = c0 + (r0 + r1) * u;
@@ -399,299 +549,332 @@ void FrontPacker::place_first_face() {
         "container is too small for the first face: the largest sphere "
         "(diameter " + std::to_string(2 * r0) + ") and its two companions "
         "must fit around the container centre");
-  add_sphere(c0, k[0], Placement::first_face, -1);
-  add_sphere(c1, k[1], Placement::first_face, -1);
-  add_sphere(*c2, k[2], Placement::first_face, -1);
-  // The first face is open on both sides.
-  faces_.push_back(Face{{0, 1, 2}});
-  faces_.push_back(Face{{0, 2, 1}});
-  state_.assign(2, kOpen);
+  place(c0, k[0], Placement::first_face);
+  place(c1, k[1], Placement::first_face);
+  open_sites(place(*c2, k[2], Placement::first_face));
 }
 
-void FrontPacker::open_faces(const Face& parent, int p, Placement how) {
-  const Vec3 a = grid_.centre(parent.v[0]), b = grid_.centre(parent.v[1]),
-             c = grid_.centre(parent.v[2]);
-  const Vec3 parent_normal = (b - a).cross(c - a);
-  const Vec3 cp = grid_.centre(p);
-  for (int e = 0; e < 3; ++e) {
-    int u = parent.v[e], v = parent.v[(e + 1) % 3], w = parent.v[(e + 2) % 3];
-    Vec3 cu = grid_.centre(u), cv = grid_.centre(v);
-    Vec3 n = (cv - cu).cross(cp - cu);
-    // A sphere on top of the face: the new faces open away from the opposite
-    // vertex. A sphere in the face plane: they open to the parent's side.
-    bool flip = how == Placement::trilateration || how == Placement::wall
-                    ? n.dot(grid_.centre(w) - cu) > 0.0
-                    : n.dot(parent_normal) < 0.0;
-    faces_.push_back(flip ? Face{{v, u, p}} : Face{{u, v, p}});
-    state_.push_back(kOpen);
-  }
-  res_.faces = static_cast<long long>(faces_.size());
-}
-
-// A sphere whose Eq. (1) position crosses a wall is moved to touch that wall
-// and two of the face spheres instead (the wall stands in for the third):
-// without this the layer along the walls stays much looser than the bulk.
-std::optional<Vec3> FrontPacker::against_wall(const Sphere* s, const Vec3& cand,
-                                              double r) const {
-  // The wall crossed the most.
-  int axis = 0, sign = 0;
-  double worst = 0.0;
+// The packing holds the particle list with room to spare: per size class,
+// the list's count of its spheres are the specimen and the others are
+// vacancies, grain-sized holes. Which ones is chosen cell by cell (cells of
+// about a coarsest diameter) so that every cell is left as close to the
+// target porosity as its packing allows. A cell's solid volume counts each
+// sphere where it lies (a sphere wider than an eighth of a cell is split
+// over the cells it meets by a lattice quadrature; a smaller one counts in
+// the cell of its centre). Coarse classes go first: each vacancy is the best
+// of a few random spheres of its class, the one whose volume falls where the
+// cells still have most to lose; then the numerous fines, spread over the
+// cells in proportion to what each still has to lose, even out the rest.
+void Packer::choose_vacancies() {
+  const double dmax = 2.0 * spec_.radius[asc_.back()];
+  int n[3];
+  Vec3 ext = spec_.hi - spec_.lo, cell_size;
   for (int a = 0; a < 3; ++a) {
-    double below = spec_.lo[a] - (cand[a] - r), above = cand[a] + r - spec_.hi[a];
-    if (below > worst) worst = below, axis = a, sign = +1;
-    if (above > worst) worst = above, axis = a, sign = -1;
+    n[a] = std::max(1, static_cast<int>(std::lround(ext[a] / dmax)));
+    cell_size[a] = ext[a] / n[a];
   }
-  if (sign == 0) return std::nullopt;
-  Vec3 inward = Vec3::Zero();
-  inward[axis] = sign;
-  Vec3 point = sign > 0 ? spec_.lo : spec_.hi;
-  std::optional<Vec3> best;
-  for (int e = 0; e < 3; ++e) {
-    const Sphere &a = s[e], &b = s[(e + 1) % 3], &c = s[(e + 2) % 3];
-    auto m = touch_two_and_plane(a, b, point, inward, r);
-    if (!m) continue;
-    for (const Vec3& q : {m->positive, m->negative}) {
-      double gap = (q - c.centre).norm() - (r + c.radius);
-      if (gap < -spec_.overlap_tolerance * std::min(r, c.radius) || !inside(q, r))
-        continue;
-      if (!best || (q - cand).squaredNorm() < (*best - cand).squaredNorm())
-        best = q;
-    }
-  }
-  return best;
-}
-
-bool FrontPacker::try_place(const Face& f, FaceData& d, int k, Side side) {
-  ++res_.attempts;
-  const double r = spec_.radius[k];
-  std::optional<MirrorPair> m;
-  if (d.frame)
-    m = trilaterate(*d.frame, d.s[0].radius, d.s[1].radius, d.s[2].radius, r);
-  if (!m) return try_fallback(f, d, k, side);
-  // Eq. (1), the common case.
-  const Vec3& cand = side == Side::open ? m->positive : m->negative;
-  if (!inside(cand, r)) {
-    if (side != Side::open) return false;
-    auto w = against_wall(d.s, cand, r);
-    return w && place_if_free(f, d, *w, k, Placement::wall, side);
-  }
-  return place_if_free(f, d, cand, k, Placement::trilateration, side);
-}
-
-// Figs. 7-8: a sphere too small to touch all three.
-bool FrontPacker::try_fallback(const Face& f, FaceData& d, int k, Side side) {
-  const double r = spec_.radius[k];
-  const Sphere* s = d.s;
-  if (!d.fallback_known) {
-    d.fallback_known = true;
-    if (d.frame)
-      d.con = constriction(*d.frame, s[0].radius, s[1].radius, s[2].radius);
-    int o[3] = {0, 1, 2};
-    std::sort(o, o + 3, [&](int x, int y) { return s[x].radius > s[y].radius; });
-    // DA touches the two larger spheres, LA the two smaller.
-    d.pair[0] = o[0], d.pair[1] = o[1], d.pair[2] = o[2];
-    if (spec_.arrangement == Arrangement::layerwise)
-      d.pair[0] = o[1], d.pair[1] = o[2], d.pair[2] = o[0];
-  }
-  if (d.con && r <= d.con->radius && !d.equilateral_known) {
-    d.equilateral_known = true;
-    d.equilateral = nearly_equilateral(s[0].centre, s[1].centre, s[2].centre,
-                                       spec_.equilateral_tolerance);
-  }
-  Vec3 cand;
-  Placement how;
-  if (d.con && r <= d.con->radius && d.equilateral) {
-    cand = d.con->centre;
-    how = Placement::constriction;
-  } else {
-    auto t = touch_two_in_plane(s[d.pair[0]], s[d.pair[1]],
-                                s[d.pair[2]].centre, r);
-    if (!t) return false;
-    cand = *t;
-    how = Placement::touch_two;
-  }
-  if (!inside(cand, r)) return false;
-  return place_if_free(f, d, cand, k, how, side);
-}
-
-bool FrontPacker::place_if_free(const Face& f, const FaceData& d,
-                                const Vec3& cand, int k, Placement how,
-                                Side side) {
-  const double r = spec_.radius[k];
-  // Hints only: which sphere is tested first changes no answer.
-  const int hint[5] = {d.behind, blocker_, vertex_blocker_[f.v[0]],
-                       vertex_blocker_[f.v[1]], vertex_blocker_[f.v[2]]};
-  int found;
-  bool from_hint;
-  if (grid_.overlaps(cand, r, spec_.overlap_tolerance, hint, 5, found,
-                     from_hint)) {
-    blocker_ = found;
-    if (!from_hint)
-      for (int v : f.v) vertex_blocker_[v] = found;
-    return false;
-  }
-  int p = grid_.size();
-  add_sphere(cand, k, how, d.index);
-  // A sphere that went into the pore behind a face opens no new front.
-  if (side == Side::open || how != Placement::trilateration)
-    open_faces(f, p, how);
-  return true;
-}
-
-// The arrangement rule: which sizes a face is offered, in which order.
-bool FrontPacker::fill_face(int face, Side side) {
-  int largest = largest_left();
-  if (largest < 0) return false;
-  const Face& f = faces_[face];
-  FaceData d;
-  d.index = face;
-  for (int i = 0; i < 3; ++i) d.s[i] = grid_.sphere(f.v[i]);
-  if (side == Side::pore && parent_face_[f.v[2]] >= 0)
-    for (int q : faces_[parent_face_[f.v[2]]].v)
-      if (q != f.v[0] && q != f.v[1]) d.behind = q;
-  d.frame = face_frame(d.s[0].centre, d.s[1].centre, d.s[2].centre);
-  if (spec_.arrangement == Arrangement::layerwise)
-    return try_place(f, d, largest, side);
-  // DA: the next sphere of a random sequence (drawn by volume), then, while
-  // the specimen is behind its target density, every smaller size.
-  int drawn = take_random_left(rng_);
-  if (try_place(f, d, drawn, side)) return true;
-  if (!behind_target()) return false;
-  // The sizes after `drawn` in by_size_ that are smaller (sizes as large as
-  // `drawn` are never retried), each radius once.
-  double failed_radius = spec_.radius[drawn];
-  for (size_t i = std::max(first_left_, smaller_from_[drawn]);
-       i < by_size_.size(); ++i) {
-    int k = by_size_[i];
-    if (left_[k] == 0 || spec_.radius[k] == failed_radius) continue;
-    if (try_place(f, d, k, side)) return true;
-    failed_radius = spec_.radius[k];
-  }
-  return false;
-}
-
-double FrontPacker::swept_volume(double radius) const {
-  return (spec_.hi - spec_.lo).prod() * sample_dist_(radius) /
-         static_cast<double>(sample_dist_.size());
-}
-
-// The density control: the rule's retries (DA: smaller sizes, LA: reopening
-// closed faces) are spent only while the spheres placed so far hold less
-// than the target solid fraction of the container volume the front swept.
-bool FrontPacker::behind_target() {
-  if (!(reach_ == swept_for_reach_)) {
-    swept_for_reach_ = reach_;
-    swept_ = swept_volume(reach_ + margin_);
-  }
-  return placed_volume_ < target_density_ * swept_;
-}
-
-void FrontPacker::skip_class(int k) {
-  res_.skipped_per_class[k] += left_[k];
-  total_left_ -= left_[k];
-  left_[k] = 0;
-  draw_stale_ = true;
-}
-
-void FrontPacker::report_progress() {
-  if (!spec_.progress || res_.placed() < next_report_) return;
-  spec_.progress(res_.placed(), total_);
-  next_report_ = res_.placed() + std::max<long long>(total_ / 10, 1);
-}
-
-PackingResult FrontPacker::run() {
-  place_first_face();
-  // Main loop: the open face nearest the container centre first, so the
-  // front grows as a compact ball out to the walls.
-  using Item = FrontQueue::Item;
-  // Shells a quarter of the finest radius thick (no more than spheres, and
-  // at most 2^16).
-  const double max_dist = 0.5 * (spec_.hi - spec_.lo).norm();
-  const double finest = spec_.radius[by_size_.back()];
-  const double shells = std::min({65536.0, static_cast<double>(total_),
-                                  4.0 * max_dist / finest});
-  FrontQueue front(max_dist, static_cast<size_t>(std::max(1.0, shells)));
-  std::vector<Item> parked;  // LA: faces closed for the current size
-  size_t queued = 0;
-  auto enqueue_new_faces = [&] {
-    for (; queued < faces_.size(); ++queued) {
-      const Face& f = faces_[queued];
-      Vec3 centroid = (grid_.centre(f.v[0]) + grid_.centre(f.v[1]) +
-                       grid_.centre(f.v[2])) / 3.0;
-      front.push({(centroid - centre_).norm(), queued});
-    }
+  auto cell_at = [&](const Vec3& q) {
+    int idx[3];
+    for (int a = 0; a < 3; ++a)
+      idx[a] = std::clamp(static_cast<int>((q[a] - spec_.lo[a]) / cell_size[a]),
+                          0, n[a] - 1);
+    return (idx[2] * n[1] + idx[1]) * n[0] + idx[0];
   };
-  enqueue_new_faces();
-  int current = largest_left();
-  // Only faces near the front reopen: deep inside, a layer stays as it grew.
-  auto reopen = [&](std::vector<Item>& parked, FrontQueue& q) {
-    double depth = 2.0 * spec_.radius[by_size_.front()];
-    for (const Item& it : parked)
-      if (it.first > reach_ - depth) q.push(it);
-    parked.clear();
+  // Quadrature points of the unit ball: the centres of an 8^3 lattice on
+  // [-1, 1]^3 that lie inside it.
+  static const std::vector<Vec3> ball = [] {
+    std::vector<Vec3> p;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j)
+        for (int k = 0; k < 8; ++k) {
+          Vec3 q((i + 0.5) / 4.0 - 1.0, (j + 0.5) / 4.0 - 1.0, (k + 0.5) / 4.0 - 1.0);
+          if (q.squaredNorm() <= 1.0) p.push_back(q);
+        }
+    return p;
+  }();
+  const double split_radius = 0.125 * cell_size.minCoeff();
+  const int cells = n[0] * n[1] * n[2];
+  // Per sphere: the cells it lies in and its share in each.
+  std::vector<std::uint32_t> part_begin(grid_.size() + 1, 0);
+  std::vector<std::pair<int, double>> parts;
+  std::vector<double> placed(cells, 0.0), lose(cells, 0.0);
+  double total_placed = 0.0, list_volume = 0.0;
+  std::vector<int> count_in(cells);
+  for (int i = 0; i < grid_.size(); ++i) {
+    part_begin[i] = static_cast<std::uint32_t>(parts.size());
+    Vec3 c = grid_.centre(i);
+    double r = grid_.radius(i), v = volume_[grid_.sphere_class(i)];
+    total_placed += v;
+    int home = cell_at(c);
+    bool within = true;  // does the sphere lie in the cell of its centre?
+    for (int a = 0; a < 3 && within; ++a) {
+      double lo = spec_.lo[a] + std::floor((c[a] - spec_.lo[a]) / cell_size[a]) * cell_size[a];
+      within = c[a] - r >= lo && c[a] + r <= lo + cell_size[a];
+    }
+    if (within || r < split_radius) {
+      parts.push_back({home, 1.0});
+    } else {
+      std::fill(count_in.begin(), count_in.end(), 0);
+      std::vector<int> touched;
+      for (const Vec3& q : ball) {
+        int cq = cell_at(c + r * q);
+        if (count_in[cq]++ == 0) touched.push_back(cq);
+      }
+      for (int cq : touched)
+        parts.push_back({cq, static_cast<double>(count_in[cq]) / ball.size()});
+    }
+    for (size_t j = part_begin[i]; j < parts.size(); ++j)
+      placed[parts[j].first] += v * parts[j].second;
+  }
+  part_begin[grid_.size()] = static_cast<std::uint32_t>(parts.size());
+  for (int k = 0; k < nclass_; ++k) list_volume += spec_.count[k] * volume_[k];
+  // What each cell should lose: its excess over the target solid volume,
+  // scaled so that the cells together lose what the packing holds too much.
+  const double cell_volume = ext.prod() / cells;
+  const double target = list_volume / ext.prod();
+  double excess = 0.0;
+  for (int c = 0; c < cells; ++c) {
+    lose[c] = std::max(0.0, placed[c] - target * cell_volume);
+    excess += lose[c];
+  }
+  double scale = excess > 0.0 ? std::max(0.0, total_placed - list_volume) / excess : 0.0;
+  for (double& l : lose) l *= scale;
+  auto remove = [&](int i) {
+    vacant_[i] = 1;
+    double v = volume_[grid_.sphere_class(i)];
+    for (size_t j = part_begin[i]; j < part_begin[i + 1]; ++j)
+      lose[parts[j].first] -= v * parts[j].second;
   };
-  while (total_left_ > 0) {
-    if (front.empty()) {
-      if (parked.empty()) break;  // all faces closed
-      // LA: no open face takes the current size: set it aside.
-      skip_class(current);
-      current = largest_left();
-      reopen(parked, front);
+  std::vector<std::vector<int>> of_class(nclass_);
+  for (int i = 0; i < grid_.size(); ++i)
+    of_class[grid_.sphere_class(i)].push_back(i);
+  std::vector<std::vector<int>> in_cell(cells);
+  for (int rk = nclass_ - 1; rk >= 0; --rk) {
+    const int k = asc_[rk];
+    std::vector<int>& v = of_class[k];
+    long long keep = std::min<long long>(spec_.count[k], v.size());
+    missing_[k] = spec_.count[k] - keep;
+    long long removals = static_cast<long long>(v.size()) - keep;
+    if (removals == 0) continue;
+    if (spec_.radius[k] >= split_radius) {
+      // Coarse: the best of a few random candidates, one vacancy at a time.
+      for (long long t = 0; t < removals; ++t) {
+        size_t left = v.size() - t, best = 0;
+        double best_score = -std::numeric_limits<double>::infinity();
+        for (int trial = 0; trial < kVacancyCandidates; ++trial) {
+          size_t j = t + std::min(left - 1, static_cast<size_t>(vacancy_rng_.uniform() * left));
+          int i = v[j];
+          // How much the removal brings the cells' losses towards zero
+          // (the drop of their sum of squares): an overshoot counts against.
+          double score = 0.0, vol = volume_[k];
+          for (size_t q = part_begin[i]; q < part_begin[i + 1]; ++q) {
+            double d = vol * parts[q].second;
+            score += d * (2.0 * lose[parts[q].first] - d);
+          }
+          if (score > best_score) best_score = score, best = j;
+        }
+        std::swap(v[t], v[best]);
+        remove(v[t]);
+      }
       continue;
     }
-    auto [dist, f] = front.top();
-    front.pop();
-    reach_ = std::max(reach_, dist);
-    bool ok = fill_face(static_cast<int>(f), Side::open);
-    state_[f] = ok ? kFilled : kFailed;
-    if (ok) {
-      enqueue_new_faces();
-      report_progress();
-    } else if (spec_.arrangement == Arrangement::layerwise && behind_target()) {
-      parked.push_back({dist, f});
+    // Fines: removals per cell by systematic sampling of what each cell
+    // still has to lose, then spheres drawn at random within the cell.
+    for (auto& l : in_cell) l.clear();
+    for (int i : v) in_cell[parts[part_begin[i]].first].push_back(i);
+    double weight_total = 0.0;
+    std::vector<double> w(cells, 0.0);
+    for (int c = 0; c < cells; ++c) {
+      w[c] = in_cell[c].empty() ? 0.0 : std::max(lose[c], 0.0) + 1e-300;
+      weight_total += w[c];
     }
-    if (spec_.arrangement == Arrangement::layerwise && largest_left() != current) {
-      // A smaller size is current: parked faces reopen.
-      current = largest_left();
-      reopen(parked, front);
+    double step = weight_total / static_cast<double>(removals);
+    double next = vacancy_rng_.uniform() * step, cum = 0.0;
+    long long planned = 0;
+    std::vector<long long> quota(cells, 0);
+    for (int c = 0; c < cells && planned < removals; ++c) {
+      cum += w[c];
+      while (next < cum && planned < removals) ++quota[c], ++planned, next += step;
     }
-  }
-  // Second loop (DA): the spheres left go into the pores behind the faces
-  // and into the constrictions; new faces this opens are filled in turn.
-  if (spec_.arrangement == Arrangement::discrete && spec_.fill_pores) {
-    reach_ = std::numeric_limits<double>::infinity();
-    size_t main_loop_faces = faces_.size();
-    for (size_t i = 0; i < faces_.size() && total_left_ > 0; ++i) {
-      // A face that closed without a sphere gets its open side again first
-      // (with reach_ infinite every smaller size is tried), then the pore.
-      bool placed = false;
-      if (i < main_loop_faces && state_[i] == kFailed)
-        placed = fill_face(static_cast<int>(i), Side::open);
-      if (!placed)
-        placed = fill_face(static_cast<int>(i), i < main_loop_faces ? Side::pore : Side::open);
-      if (placed) {
-        res_.placed_in_second_loop++;
-        state_[i] = kFilled;
+    // A cell asked for more of this size than it holds passes the rest on.
+    long long carry = removals - planned;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int c = 0; c < cells; ++c) {
+        std::vector<int>& l = in_cell[c];
+        long long q = (pass == 0 ? quota[c] : 0) + carry;
+        long long taken = 0;
+        for (size_t t = 0; t < l.size() && taken < q; ++t) {
+          size_t j = t + std::min(l.size() - t - 1,
+                                  static_cast<size_t>(vacancy_rng_.uniform() * (l.size() - t)));
+          std::swap(l[t], l[j]);
+          if (!vacant_[l[t]]) remove(l[t]), ++taken;
+        }
+        carry = q - taken;
       }
-      report_progress();
+  }
+}
+
+// The second loop: a class the packing holds too few of (the target is
+// denser than the packing, or the last coarse grains found no room under
+// the lid) has its missing grains put, largest first, into a vacancy of
+// their size or the smallest larger one, at its centre.
+void Packer::second_loop() {
+  std::vector<std::vector<int>> vacancy(nclass_);  // by rank
+  for (int i = 0; i < grid_.size(); ++i)
+    if (vacant_[i]) vacancy[rank_[grid_.sphere_class(i)]].push_back(i);
+  for (int rk = nclass_ - 1; rk >= 0; --rk) {
+    int k = asc_[rk];
+    while (missing_[k] > 0) {
+      int from = -1;
+      for (int v = rk; v < nclass_ && from < 0; ++v)
+        if (!vacancy[v].empty() && spec_.radius[asc_[v]] >= spec_.radius[k])
+          from = v;
+      if (from < 0) break;
+      // A random one of them, so the second loop's grains are spread too.
+      std::vector<int>& holes = vacancy[from];
+      size_t pick = std::min(holes.size() - 1,
+                             static_cast<size_t>(vacancy_rng_.uniform() * holes.size()));
+      int hole = holes[pick];
+      holes[pick] = holes.back();
+      holes.pop_back();
+      vacant_[hole] = 2;  // filled
+      res_.centre.push_back(grid_.centre(hole));
+      res_.radius.push_back(spec_.radius[k]);
+      res_.size_class.push_back(k);
+      res_.placement.push_back(Placement::vacancy);
+      ++res_.placed_per_class[k];
+      ++res_.placed_by[static_cast<int>(Placement::vacancy)];
+      ++res_.placed_in_second_loop;
+      --missing_[k];
     }
   }
-  res_.peak_bytes = grid_.memory_bytes() + faces_.capacity() * sizeof(Face) +
-                    vertex_blocker_.capacity() * sizeof(int32_t) +
-                    parent_face_.capacity() * sizeof(int32_t) +
-                    state_.capacity() +
+  // A grain still missing (no vacancy of its size) goes, if it fits among
+  // the specimen's spheres, at the centre of a smaller vacancy whose
+  // neighbours are vacancies too.
+  long long still = 0;
+  for (long long m : missing_) still += m;
+  if (still == 0) return;
+  SphereGrid real(spec_.lo, spec_.hi, spec_.radius,
+                  std::max<std::size_t>(1u << 16, res_.centre.size()));
+  for (size_t i = 0; i < res_.centre.size(); ++i)
+    real.insert(res_.centre[i], res_.size_class[i]);
+  std::vector<int> holes;
+  for (int v = nclass_ - 1; v >= 0; --v)
+    for (int i : vacancy[v]) holes.push_back(i);
+  for (int rk = nclass_ - 1; rk >= 0; --rk) {
+    int k = asc_[rk];
+    const double r = spec_.radius[k];
+    for (size_t h = 0; h < holes.size() && missing_[k] > 0; ++h) {
+      int hole = holes[h];
+      if (hole < 0) continue;
+      Vec3 c = grid_.centre(hole);
+      if (!inside(c, r) || real.overlaps(c, r, spec_.overlap_tolerance)) continue;
+      real.insert(c, k);
+      holes[h] = -1;
+      vacant_[hole] = 2;
+      res_.centre.push_back(c);
+      res_.radius.push_back(r);
+      res_.size_class.push_back(k);
+      res_.placement.push_back(Placement::vacancy);
+      ++res_.placed_per_class[k];
+      ++res_.placed_by[static_cast<int>(Placement::vacancy)];
+      ++res_.placed_in_second_loop;
+      --missing_[k];
+    }
+  }
+}
+
+void Packer::report_progress() {
+  if (!spec_.progress || grid_.size() < next_report_) return;
+  spec_.progress(grid_.size(), total_);
+  next_report_ = grid_.size() + std::max<long long>(total_ / 10, 1);
+}
+
+PackingResult Packer::run() {
+  grid_.reserve(static_cast<std::size_t>(total_ * 1.2) + 16);
+  next_report_ = std::max<long long>(total_ / 10, 1);
+  if (spec_.start == Start::centre) first_face();
+  // The eight corners are sites (three walls) from the start.
+  for (int x = 0; x < 2; ++x)
+    for (int y = 0; y < 2; ++y)
+      for (int z = 0; z < 2; ++z)
+        push(Site{0.0, next_order_++,
+                  {wall_code(0, x), wall_code(1, y), wall_code(2, z)}, 1},
+             nclass_ - 1);
+  // The container is packed full: grains are drawn until no site takes one.
+  // A grain drawn that does not fit where it was offered waits for the next
+  // site that fits it, so no size is replaced by smaller ones on the spot.
+  int pending = -1;
+  for (;;) {
+    Site s;
+    int level, k;
+    if (pending < 0 && spec_.arrangement == Arrangement::layerwise) {
+      // LA: the lowest site draws its grain among the sizes like its own.
+      if (!pop_lowest(0, s, level)) break;  // the container is full
+      k = choose_grain(s, level);
+      if (k < 0) {
+        new_deck();  // this deck has spent every size the site may take
+        k = choose_grain(s, level);
+      }
+      if (!try_site(s, k)) {
+        push(s, below_[rank_[k]]);
+        pending = k;
+      }
+      continue;
+    }
+    // DA (and an LA grain that did not fit): the grain drawn takes the
+    // lowest site that fits it.
+    if (pending < 0) pending = draw_by_number();
+    if (pending < 0) break;  // no open site at all: the container is full
+    k = pending;
+    if (!pop_lowest(rank_[k], s, level)) {
+      // No open site takes this size: it goes back into the deck, and this
+      // size and larger ones wait until a site opens for them.
+      ++deck_[k], ++deck_total_;
+      blocked_ = rank_[k];
+      pending = -1;
+      continue;
+    }
+    if (try_site(s, k))
+      pending = -1;
+    else
+      push(s, below_[rank_[k]]);
+  }
+  choose_vacancies();
+  // The specimen: its grains in placement order, then the second loop's.
+  for (int i = 0; i < grid_.size(); ++i) {
+    if (vacant_[i]) continue;
+    int k = grid_.sphere_class(i);
+    res_.centre.push_back(grid_.centre(i));
+    res_.radius.push_back(spec_.radius[k]);
+    res_.size_class.push_back(k);
+    res_.placement.push_back(how_[i]);
+    ++res_.placed_per_class[k];
+    ++res_.placed_by[static_cast<int>(how_[i])];
+  }
+  if (spec_.fill_pores) second_loop();
+  res_.unplaced_per_class = missing_;
+  for (int i = 0; i < grid_.size(); ++i)
+    res_.packed_volume += volume_[grid_.sphere_class(i)];
+  for (int i = 0; i < grid_.size(); ++i)
+    if (vacant_[i] == 1) {
+      ++res_.vacancies;
+      res_.vacancy_volume += volume_[grid_.sphere_class(i)];
+    }
+  res_.peak_bytes = grid_.memory_bytes() + peak_sites_ * sizeof(Site) +
+                    vacant_.capacity() + how_.capacity() * sizeof(Placement) +
                     res_.centre.capacity() * sizeof(Vec3) +
                     res_.radius.capacity() * sizeof(double) +
                     res_.size_class.capacity() * sizeof(int) +
                     res_.placement.capacity() * sizeof(Placement);
-  if (spec_.progress) spec_.progress(res_.placed(), total_);
+  if (spec_.progress) spec_.progress(grid_.size(), total_);
   return std::move(res_);
 }
 
 }  // namespace
 
 PackingResult pack(const PackingSpec& spec) {
-  FrontPacker packer(spec);
+  Packer packer(spec);
   return packer.run();
 }
 

@@ -1,29 +1,42 @@
-// The sequential front packer of the paper (section 2.2, Fig. 4).
+// The sequential packer (paper, sections 2.2-2.3, Fig. 4), built so that a
+// specimen reaches its target porosity uniformly, from the floor (or the
+// centre) to the walls, with every grain of the PSD placed.
 //
-// Plain C++, no LIGGGHTS include. The largest sphere and two companions form
-// the first face at the container centre. Faces are oriented triangles of
-// sphere centres whose right-hand normal points to their open side; they are
-// taken in turn, the one nearest the container centre first, so the front
-// grows as a compact ball out to the walls. A sphere is attached to a face by
-// trilateration (Eq. 1) or, when it is too small for Eq. 1, by the fallbacks
-// of Figs. 7-8; if it overlaps no sphere and no wall the face closes, the
-// sphere is used and its three new faces open. On overlap the arrangement
-// rule decides (the one place where the two rules differ: next_candidate):
-//   layerwise (LA): spheres are used strictly largest first and the face
-//                   closes for that size, so like sizes end up together;
-//   discrete  (DA): spheres come in a random sequence drawn by the volume
-//                   left per size (weighted towards coarse sizes); on overlap
-//                   the smaller sizes are tried on the same face before it
-//                   closes, so fine spheres fill the gaps between coarse ones.
-// Both rules spend their retries (DA: smaller sizes; LA: reopening closed
-// faces near the front) only while the placed volume is behind the target
-// solid fraction of the container volume the front has swept: this keeps the
-// specimen at its target density from the centre out to the walls. A sphere
-// whose Eq. (1) position crosses a wall is moved to touch the wall and two of
-// the face spheres.
-// It ends when all spheres are used or all faces closed. For DA an optional
-// second loop (pore filling, the paper's ref. [32]) revisits the faces that
-// closed without a sphere, with the spheres that are left.
+// Plain C++, no LIGGGHTS include. A grain is placed on a *site*: a triple of
+// supports that it touches, each support a sphere already placed or a
+// container wall, solved in closed form:
+//   three spheres            Eq. (1), trilateration (falls back to Figs. 7-8
+//                            when the grain is too small to touch all three)
+//   two spheres and a wall   Eq. (1) with the wall for one sphere
+//   one sphere and two walls the sphere touching an edge of the container
+//   three walls              a corner (the first grains of a floor start)
+// Every placed sphere opens sites with the pairs of spheres (and walls) that
+// lie within a small gap of it, on both sides of each triple; sites are taken
+// lowest first (start floor: a flat front rising from the floor, the densest
+// and most uniform order) or nearest the container centre first (start
+// centre: the paper's growth from a first face at the centre). Taking the
+// nearest site first is Bennett's (1972) rule, which packs densely and
+// without a gradient, so no pocket is left empty behind the front.
+//
+// A site that cannot take the grain offered (it would overlap a sphere or
+// cross a wall) is not closed: it is kept for the sizes smaller than that
+// grain, so fines fill the pockets the coarse grains leave. Grains come in a
+// random sequence drawn by number from decks (the particle list, shuffled);
+// a drawn grain waits for the next site that fits it, so coarse grains are
+// not replaced by fines on the spot. The arrangement rule decides which grain
+// goes where (the one place the two rules differ):
+//   discrete  (DA): a drawn grain takes the lowest (nearest) site that fits
+//                   it: fines end up between coarse grains, a homogeneous
+//                   mixture;
+//   layerwise (LA): the lowest site draws its grain, weighted towards the
+//                   sizes of the spheres it touches ("similar radii have
+//                   priority", choose_grain()), so like sizes grow together.
+// The container is packed full, denser than most targets. Per size class,
+// the list's count of the spheres placed are the specimen; the others are
+// vacancies, grain-sized holes chosen cell by cell so that every part of the
+// container is left at the target porosity. A class that the full packing
+// holds too few of has its missing grains put into vacancies of their size
+// or the next larger (the second loop).
 #ifndef FABRIC_FRONT_PACKER_H
 #define FABRIC_FRONT_PACKER_H
 
@@ -39,23 +52,36 @@ namespace fabric {
 enum class Arrangement { discrete, layerwise };
 std::string to_string(Arrangement a);
 
+// Where the packing starts and which site is taken first.
+enum class Start { floor, centre };
+std::string to_string(Start s);
+
 // How a sphere came to its place.
 enum class Placement : uint8_t {
-  first_face = 0,     // one of the three spheres of the first face
-  trilateration = 1,  // Eq. (1): touches the three face spheres
+  first_face = 0,     // one of the three spheres of the first face (centre)
+  trilateration = 1,  // Eq. (1): touches three spheres
   constriction = 2,   // Fig. 7: centre of the constriction (Eq. 2)
   touch_two = 3,      // Fig. 8: in the face plane, touching two face spheres
-  wall = 4,           // Eq. (1) with a wall for one face sphere
+  wall = 4,           // touches two spheres and a wall
+  edge = 5,           // touches one sphere and two walls
+  corner = 6,         // touches three walls
+  vacancy = 7,        // second loop: put into a vacancy of its size
 };
-constexpr int kPlacementKinds = 5;
+constexpr int kPlacementKinds = 8;
+std::string to_string(Placement p);
 
 struct PackingSpec {
   Vec3 lo, hi;                      // the container, an axis-aligned box
   std::vector<double> radius;       // per size class
   std::vector<long long> count;     // spheres to place per size class
   Arrangement arrangement = Arrangement::discrete;
-  std::uint64_t seed = 1;           // orientation and companions of face 1
-  bool fill_pores = true;           // the second loop (DA only)
+  Start start = Start::floor;
+  std::uint64_t seed = 1;
+  // The second loop: missing grains go into vacancies.
+  bool fill_pores = true;
+  // LA: width of the size preference in ln(radius): a site is offered size
+  // k with weight (left in the deck) * exp(-(ln r_k - ln r_site)^2 / (2 w^2)).
+  double layering = 0.25;
   double equilateral_tolerance = 0.1;  // Fig. 7, see nearly_equilateral()
   double overlap_tolerance = 1e-10;    // relative to the smaller radius
   // Called now and then with (placed, total) for progress output.
@@ -68,17 +94,21 @@ struct PackingResult {
   std::vector<int> size_class;
   std::vector<Placement> placement;
   std::vector<long long> placed_per_class;
-  std::vector<long long> skipped_per_class;  // LA: set aside, unplaced
+  std::vector<long long> unplaced_per_class;  // found no site and no vacancy
   long long placed_by[kPlacementKinds] = {};
-  long long placed_in_second_loop = 0;
-  long long faces = 0;       // faces opened in all
-  long long attempts = 0;    // placement attempts (one per face and size)
+  long long placed_in_second_loop = 0;  // into vacancies
+  long long vacancies = 0;              // vacancies left empty at the end
+  double vacancy_volume = 0.0;          // their volume
+  double packed_volume = 0.0;  // of the full packing, vacancies included
+  long long sites = 0;       // sites opened in all
+  long long attempts = 0;    // grains offered to a site
   std::size_t peak_bytes = 0;  // the packer's own data at its largest
   long long placed() const { return static_cast<long long>(centre.size()); }
+  long long unplaced() const;
 };
 
 // Throws std::invalid_argument when the spec is unusable (no spheres,
-// negative counts or radii, a container that cannot hold the first face).
+// negative counts or radii, a container that cannot hold the largest grain).
 PackingResult pack(const PackingSpec& spec);
 
 }  // namespace fabric

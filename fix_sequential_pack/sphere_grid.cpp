@@ -212,6 +212,36 @@ bool SphereGrid::scan(const Vec3& c, double radius, double rel_tol,
   return false;
 }
 
+void SphereGrid::within_gap(const Vec3& c, double radius, double gap,
+                            std::vector<int>& out) const {
+  for (const Level& L : level_) {
+    if (L.count == 0) continue;
+    Box b = box(L, c, radius + L.max_radius + gap);
+    for (int bz = b.lo[2] >> 2; bz <= b.hi[2] >> 2; ++bz) {
+      std::uint64_t mz = axis_bits(2, bz, b.lo[2], b.hi[2]);
+      for (int by = b.lo[1] >> 2; by <= b.hi[1] >> 2; ++by) {
+        std::uint64_t myz = mz & axis_bits(1, by, b.lo[1], b.hi[1]);
+        size_t row = (static_cast<size_t>(bz) * L.nb[1] + by) * L.nb[0];
+        for (int bx = b.lo[0] >> 2; bx <= b.hi[0] >> 2; ++bx) {
+          std::uint64_t bits = L.occupied[row + bx] & myz &
+                               axis_bits(0, bx, b.lo[0], b.hi[0]);
+          const int32_t* h = L.head.data() + 64 * (row + bx);
+          while (bits) {
+            int bit = lowest_bit(bits);
+            bits &= bits - 1;
+            for (int j = h[bit]; j >= 0; j = s_[j].next) {
+              const Entry& e = s_[j];
+              double reach = radius + class_radius_[e.size_class] + gap;
+              double dx = c[0] - e.x, dy = c[1] - e.y, dz = c[2] - e.z;
+              if (dx * dx + dy * dy + dz * dz < reach * reach) out.push_back(j);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 bool SphereGrid::overlaps(const Vec3& c, double radius, double rel_tol) const {
   int found;
   return scan(c, radius, rel_tol, found);

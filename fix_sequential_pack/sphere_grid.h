@@ -60,9 +60,14 @@ class SphereGrid {
     return scan(centre, radius, rel_tol, found);
   }
 
+  // Appends to `out` every stored sphere j whose gap to a sphere at `centre`
+  // with `radius` is below `gap`: |centre - c_j| - radius - r_j < gap.
+  void within_gap(const Vec3& centre, double radius, double gap,
+                  std::vector<int>& out) const;
   int size() const { return static_cast<int>(s_.size()); }
   Vec3 centre(int i) const { return Vec3(s_[i].x, s_[i].y, s_[i].z); }
   double radius(int i) const { return class_radius_[s_[i].size_class]; }
+  int sphere_class(int i) const { return s_[i].size_class; }
   Sphere sphere(int i) const { return Sphere{centre(i), radius(i)}; }
   int levels() const { return static_cast<int>(level_.size()); }
   std::size_t memory_bytes() const;

@@ -122,6 +122,29 @@ std::optional<MirrorPair> touch_two_and_plane(const Sphere& a, const Sphere& b,
   return m;
 }
 
+std::optional<MirrorPair> touch_one_and_two_planes(const Sphere& a, int axis1,
+                                                   double plane1,
+                                                   double inward1, int axis2,
+                                                   double plane2,
+                                                   double inward2, double r4) {
+  if (axis1 == axis2 || axis1 < 0 || axis2 < 0 || axis1 > 2 || axis2 > 2)
+    return std::nullopt;
+  const int axis3 = 3 - axis1 - axis2;
+  Vec3 c;
+  c[axis1] = plane1 + inward1 * r4;
+  c[axis2] = plane2 + inward2 * r4;
+  double d1 = c[axis1] - a.centre[axis1], d2 = c[axis2] - a.centre[axis2];
+  double R = a.radius + r4;
+  double h2 = R * R - d1 * d1 - d2 * d2;
+  if (!(h2 >= 0.0)) return std::nullopt;
+  double h = std::sqrt(h2);
+  MirrorPair m{c, c};
+  m.positive[axis3] = a.centre[axis3] + h;
+  m.negative[axis3] = a.centre[axis3] - h;
+  if (!m.positive.allFinite() || !m.negative.allFinite()) return std::nullopt;
+  return m;
+}
+
 bool nearly_equilateral(const Vec3& c1, const Vec3& c2, const Vec3& c3,
                         double tolerance) {
   double s[3] = {(c2 - c1).norm(), (c3 - c2).norm(), (c1 - c3).norm()};

@@ -95,6 +95,15 @@ std::optional<MirrorPair> touch_two_and_plane(const Sphere& a, const Sphere& b,
                                               const Vec3& plane_point,
                                               const Vec3& inward, double r4);
 
+// A sphere of radius r4 touching sphere a and two perpendicular walls along
+// an edge of the container: wall i is the plane {x[axis_i] = plane_i} with
+// the sphere on the side inward_i (+1 or -1). The walls fix two coordinates,
+// the sphere the third; `positive` has the larger third coordinate.
+std::optional<MirrorPair> touch_one_and_two_planes(const Sphere& a, int axis1,
+                                                   double plane1,
+                                                   double inward1, int axis2,
+                                                   double plane2,
+                                                   double inward2, double r4);
 // Fig. 7: "virtually an equal-sided triangle": longest over shortest side of
 // the face within 1 + tolerance.
 bool nearly_equilateral(const Vec3& c1, const Vec3& c2, const Vec3& c3,

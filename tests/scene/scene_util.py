@@ -259,7 +259,31 @@ def pack_scene(psd, edge, porosity=0.4, arrangement="discrete", seed=1,
     if dump:
         text += dump_lines("d1", dump, fix_id)
     text += run + "\n"
+    text += vector_print(fix_id)
     return text
+
+
+PACK_VECTOR = ("placed", "listed", "porosity", "interior_porosity",
+               "wall_layer_porosity", "seconds")
+
+
+def vector_print(fix_id):
+    """Input lines that print the fix's global vector as one line."""
+    text = ""
+    for i in range(len(PACK_VECTOR)):
+        text += "variable        pv%d equal f_%s[%d]\n" % (i + 1, fix_id, i + 1)
+    text += ('print           "PACK_VECTOR %s"\n'
+             % " ".join("${pv%d}" % (i + 1) for i in range(len(PACK_VECTOR))))
+    return text
+
+
+def pack_vector(text):
+    """The fix's global vector as printed by vector_print(): a dict by name
+    (the last such line), or None."""
+    found = re.findall(r"^PACK_VECTOR (.*)$", text, re.M)
+    if not found:
+        return None
+    return dict(zip(PACK_VECTOR, (float(v) for v in found[-1].split())))
 
 
 # ---- reading results -----------------------------------------------------
@@ -325,7 +349,7 @@ def nlocal_stats(text):
 
 def pack_summary(text):
     """From the fix's summary: (in the list, placed, not placed) or None."""
-    m = re.search(r"particles: (\d+) in the list .*?, (\d+) placed, (\d+) "
+    m = re.search(r"particles: (\d+) in the list, (\d+) placed .*?, (\d+) "
                   r"not placed", text)
     return tuple(int(v) for v in m.groups()) if m else None
 

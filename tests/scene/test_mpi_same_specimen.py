@@ -61,6 +61,23 @@ def main():
                       % (arrangement, n, summary, snap.natoms),
                       summary is not None and summary[1] == snap.natoms
                       and len(snap.rows) == snap.natoms)
+            # The fix's global vector (what scripts read) says the same as
+            # the dump: placed = atoms, porosity = 1 - sphere volume / V.
+            vec = su.pack_vector(res.text)
+            r = snap.col("radius")
+            porosity = 1.0 - (4.0 / 3.0 * np.pi * r ** 3).sum() / EDGE ** 3
+            chk.check("%s on %d rank(s): f_%s[1..3] = placed %s, listed %s, "
+                      "porosity %s (dump: %d atoms, porosity %.6f; summary "
+                      "lists %s)" % (arrangement, n, FIX,
+                                     vec and vec["placed"], vec and vec["listed"],
+                                     vec and vec["porosity"], snap.natoms,
+                                     porosity, summary and summary[0]),
+                      vec is not None and vec["placed"] == snap.natoms
+                      and summary is not None and vec["listed"] == summary[0]
+                      and abs(vec["porosity"] - porosity) < 1e-9
+                      and 0.0 < vec["interior_porosity"] < 1.0
+                      and 0.0 < vec["wall_layer_porosity"] < 1.0
+                      and vec["seconds"] > 0.0)
             nl = su.nlocal_stats(res.text)
             if n > 1:
                 chk.check("%s on %d ranks: every rank owns atoms (Nlocal "
