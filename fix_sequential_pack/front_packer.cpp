@@ -125,6 +125,13 @@ class Packer {
   void add_site(int a, int b, int c);
   void push(Site s, int level);
   bool pop_lowest(int min_level, Site& s, int& level);
+  void refresh_front(int level);
+  void demote(const Site& s, int k);
+  struct Front {
+    double key;
+    std::uint32_t order;
+  };
+  std::vector<Front> front_;  // per level: key and order of its heap's top
   int choose_grain(const Site& s, int level);
   int draw_by_number();
   int place(const Vec3& c, int k, Placement how);
@@ -229,6 +236,8 @@ Packer::Packer(const PackingSpec& spec)
   // pocket a grain can sit in, and few enough triples to stay fast.
   gap_ = 2.0 * rmin;
   heap_.resize(nclass_);
+  front_.assign(nclass_, Front{std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<std::uint32_t>::max()});
   // x: where a size lies between the finest and the coarsest, in ln(r).
   const double span = std::log(rmax / rmin);
   for (int i = 0; i < nclass_; ++i) {
@@ -346,21 +355,39 @@ void Packer::push(Site s, int level) {
     heap_[level].push_back(s);
     blocked_ = std::max(blocked_, level + 1);
     std::push_heap(heap_[level].begin(), heap_[level].end(), Later());
+    refresh_front(level);
     peak_sites_ = std::max(peak_sites_, ++live_sites_);
     return;
   }
 }
 
+void Packer::refresh_front(int level) {
+  const std::vector<Site>& h = heap_[level];
+  front_[level] = h.empty() ? Front{std::numeric_limits<double>::infinity(),
+                                    std::numeric_limits<std::uint32_t>::max()}
+                            : Front{h.front().key, h.front().order};
+}
+
+// A site on which grain k did not fit goes to the heap of the sizes below
+// k. (Closing it when even the finest size does not fit there cut the
+// attempts per grain from 155 to 57 but left the specimens less uniform:
+// Cu 2.5 DA sub-cubes up to 0.383 against 0.372.)
+void Packer::demote(const Site& s, int k) { push(s, below_[rank_[k]]); }
+
 bool Packer::pop_lowest(int min_level, Site& s, int& level) {
   level = -1;
-  for (int l = std::max(min_level, 0); l < nclass_; ++l)
-    if (!heap_[l].empty() &&
-        (level < 0 || Later()(heap_[level].front(), heap_[l].front())))
-      level = l;
-  if (level < 0) return false;
+  Front best{std::numeric_limits<double>::infinity(),
+             std::numeric_limits<std::uint32_t>::max()};
+  for (int l = std::max(min_level, 0); l < nclass_; ++l) {
+    const Front& f = front_[l];
+    if (f.key < best.key || (f.key == best.key && f.order < best.order))
+      best = f, level = l;
+  }
+  if (level < 0 || heap_[level].empty()) return false;
   std::pop_heap(heap_[level].begin(), heap_[level].end(), Later());
   s = heap_[level].back();
   heap_[level].pop_back();
+  refresh_front(level);
   --live_sites_;
   return true;
 }
@@ -817,7 +844,7 @@ PackingResult Packer::run() {
         k = choose_grain(s, level);
       }
       if (!try_site(s, k)) {
-        push(s, below_[rank_[k]]);
+        demote(s, k);
         pending = k;
       }
       continue;
@@ -838,7 +865,7 @@ PackingResult Packer::run() {
     if (try_site(s, k))
       pending = -1;
     else
-      push(s, below_[rank_[k]]);
+      demote(s, k);
   }
   choose_vacancies();
   // The specimen: its grains in placement order, then the second loop's.
