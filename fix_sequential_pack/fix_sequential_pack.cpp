@@ -21,8 +21,10 @@
 #include "error.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "region.h"
 #include "specimen_measure.h"
+#include "sphere_grid.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -34,6 +36,15 @@ namespace {
 // up to 1.6 times the list) plus a LIGGGHTS granular atom with its
 // neighbour and contact-history data on its owning rank (a generous 2 kB).
 constexpr double kPackerBytes = 400.0, kAtomBytes = 2048.0;
+
+// The fix LIGGGHTS deleted last (pre_delete), read by the constructor of a
+// fix that replaces it under the same ID.
+struct Deleted {
+  const LAMMPS *lmp = nullptr;
+  std::string id;
+  bool inserted = false;
+};
+Deleted last_deleted;
 
 std::string fmt(const char *f, double v) {
   char b[64];
@@ -60,6 +71,26 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
       summary_{0, 0, 0, 0, 0, 0},
       interval_(nullptr),
       nmax_(0) {
+  // A fix defined again with an existing ID replaces the old one: LIGGGHTS
+  // (Modify::add_fix) calls the old one's pre_delete(), deletes it and leaves
+  // its slot NULL while the new one is constructed (Atom::add_callback finds
+  // the new fix by that slot). The old fix's state goes with it, so after
+  // the packing the new one would pack a second specimen on top of the
+  // first: coincident grains, NaN forces. Before it, a new definition simply
+  // replaces the settings.
+  bool replacing = false;
+  for (int i = 0; i < modify->nfix; ++i) replacing |= modify->fix[i] == nullptr;
+  const bool packed = replacing && last_deleted.lmp == lmp &&
+                      last_deleted.id == id && last_deleted.inserted;
+  last_deleted = Deleted();
+  if (packed)
+    error->all(FLERR, ("Fix sequential/pack: fix ID '" + std::string(id) +
+                       "' is defined again after it inserted its specimen; "
+                       "the new definition would replace it and pack a "
+                       "second specimen on top of the first. Define the fix "
+                       "once (it packs once; after read_restart its "
+                       "definition restores it), or give another container "
+                       "another fix ID").c_str());
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
     error->all(FLERR, "Fix sequential/pack requires atom_style granular "
                       "(sphere: radius, rmass, omega)");
@@ -258,6 +289,12 @@ void FixSequentialPack::parse(int narg, char **arg) {
 
 int FixSequentialPack::setmask() { return PRE_EXCHANGE; }
 
+void FixSequentialPack::pre_delete(bool) {
+  last_deleted.lmp = lmp;
+  last_deleted.id = id;
+  last_deleted.inserted = inserted_ != 0;
+}
+
 double FixSequentialPack::max_rad(int type) {
   return type == atom_type_ ? 0.5 * intervals_.back().d_mean : 0.0;
 }
@@ -374,6 +411,81 @@ void FixSequentialPack::insert_specimen() {
     atom->map_set();
   }
   print_summary(res, seconds);
+  check_neighbours(res);
+}
+
+void FixSequentialPack::check_neighbours(const fabric::PackingResult &res) {
+  const long long n = res.placed();
+  if (n < 2) return;
+  const int one = neighbor->oneatom;
+  const double skin = neighbor->skin;
+  const double cdf = std::max(1.0, neighbor->contactDistanceFactor);
+  double rmax = 0.0, rmin = INFINITY;
+  for (double r : res.radius) rmax = std::max(rmax, r), rmin = std::min(rmin, r);
+  // LIGGGHTS lists j for grain i when |x_i - x_j| <= (r_i + r_j) cdf + skin
+  // (granular_bin_no_newton). A safe bound first: every such neighbour lies
+  // wholly inside the ball of radius (2 rmax) cdf + rmax + skin around the
+  // coarsest grain and holds at least a finest grain's volume.
+  const double reach_max = 2.0 * rmax * cdf + rmax + skin;
+  if (std::pow(reach_max / rmin, 3) <= one) return;
+
+  // The count from the specimen, for every grain of at least half the
+  // coarsest radius (the count grows with the grain's size). Per grain the
+  // gaps are kept to tell which skin the present 'one' allows.
+  std::vector<double> class_radius(list_.diameter.size());
+  for (size_t k = 0; k < class_radius.size(); ++k)
+    class_radius[k] = 0.5 * list_.diameter[k];
+  fabric::SphereGrid grid(fabric::Vec3(lo_[0], lo_[1], lo_[2]),
+                          fabric::Vec3(hi_[0], hi_[1], hi_[2]), class_radius,
+                          std::max<std::size_t>(1u << 16, res.centre.size()));
+  for (long long i = 0; i < n; ++i) grid.insert(res.centre[i], res.size_class[i]);
+  // With the skin that leaves the list a margin of 1.5 for compaction.
+  const long long keep = std::max<long long>(1, static_cast<long long>(one / 1.5));
+  long long worst = 0;
+  double worst_d = 0.0, skin_ok = INFINITY;
+  std::vector<int> near;
+  std::vector<double> gap;
+  for (long long i = 0; i < n; ++i) {
+    const double ri = res.radius[i];
+    if (ri < 0.5 * rmax) continue;
+    near.clear();
+    gap.clear();
+    grid.within_gap(res.centre[i], ri,
+                    skin + (cdf - 1.0) * (ri + rmax) + 1e-12 * rmax, near);
+    for (int j : near) {
+      if (j == i) continue;
+      const fabric::Vec3 d = grid.centre(j) - res.centre[i];
+      // the skin that takes this neighbour into i's list
+      gap.push_back(std::sqrt(d.dot(d)) - (ri + grid.radius(j)) * cdf);
+    }
+    long long count = 0;
+    for (double g : gap) count += g <= skin;
+    if (count > worst) worst = count, worst_d = 2.0 * ri;
+    if (static_cast<long long>(gap.size()) > keep) {
+      std::nth_element(gap.begin(), gap.begin() + keep, gap.end());
+      skin_ok = std::min(skin_ok, gap[keep]);
+    }
+  }
+  if (worst <= one) return;
+  // Suggest a list that holds 1.5 times the count (compaction, rounding),
+  // rounded up to hundreds; the page must hold 10 lists (Neighbor::init).
+  const long long need = (static_cast<long long>(1.5 * worst) + 99) / 100 * 100;
+  const long long page = std::max<long long>(neighbor->pgsize, 10 * need);
+  std::string skin_hint;
+  if (std::isfinite(skin_ok) && skin_ok > 0.0 && skin_ok < skin)
+    skin_hint = ", or keep 'one " + std::to_string(one) +
+                "' with a smaller skin: 'neighbor " +
+                fmt("%.2g", 0.99 * skin_ok) + " bin' or less";
+  char b[1024];
+  snprintf(b, sizeof b,
+           "Fix sequential/pack: a grain of diameter %g has %lld neighbours "
+           "within its radius + theirs + the neighbor skin %g, more than "
+           "LIGGGHTS' neighbour list holds per grain (neigh_modify one %d, "
+           "page %d); the run would stop with 'Neighbor list overflow'. Add "
+           "'neigh_modify one %lld page %lld' before the run%s",
+           worst_d, worst, skin, one, neighbor->pgsize, need, page,
+           skin_hint.c_str());
+  error->all(FLERR, b);
 }
 
 void FixSequentialPack::print_summary(const fabric::PackingResult &res,

@@ -31,6 +31,9 @@ class FixSequentialPack : public Fix {
   int setmask();
   void setup_pre_exchange();
   void pre_exchange() {}
+  // Called by LIGGGHTS before it deletes the fix (unfix, or a new fix with
+  // the same ID): records whether the specimen was inserted.
+  void pre_delete(bool unfixflag);
 
   // largest radius this fix inserts, so pair gran sizes its cut-off before
   // the atoms exist
@@ -62,6 +65,10 @@ class FixSequentialPack : public Fix {
   void parse(int narg, char **arg);
   void insert_specimen();
   void print_summary(const fabric::PackingResult &, double seconds);
+  // Stops the run when the specimen's coarse grains have more neighbours
+  // (within their radius + a neighbour's radius + the neighbor skin) than
+  // LIGGGHTS' neighbour list holds per atom (neigh_modify one).
+  void check_neighbours(const fabric::PackingResult &);
   void message(const std::string &text);
 
   std::string psd_file_, region_id_;
