@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <stdexcept>
 
 #include "atom.h"
@@ -30,6 +31,10 @@
 
 using namespace LAMMPS_NS;
 
+namespace {
+// The computes that warned about a non-finite state in this run (once each).
+std::set<const ComputePrimaryFabric *> warned_nonfinite;
+}  // namespace
 
 ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
                                            char **arg)
@@ -78,6 +83,7 @@ ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
 }
 
 ComputePrimaryFabric::~ComputePrimaryFabric() {
+  warned_nonfinite.erase(this);
   delete[] vector;
   memory->destroy(array);
   memory->destroy(peratom_);
@@ -237,6 +243,7 @@ void ComputePrimaryFabric::init() {
   }
   analysed_step_ = -1;  // a new run: atoms may have moved on this same step
   warned_ = false;
+  warned_nonfinite.erase(this);
 }
 
 void ComputePrimaryFabric::find_walls() {
@@ -431,6 +438,32 @@ void ComputePrimaryFabric::analyse() {
                                 " (intervals_from)").c_str()
                                : "the specimen's sizes");
     error->all(FLERR, m);
+  }
+
+  // A state with NaN or inf positions or forces (e.g. coincident particles)
+  // classifies as loose everywhere: say so instead of a silent "all loose".
+  long long nonfinite = 0;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    bool ok = true;
+    for (int a = 0; a < 3; ++a)
+      ok = ok && std::isfinite(x[i][a]) && std::isfinite(atom->f[i][a]);
+    nonfinite += !ok;
+  }
+  long long nonfinite_all = 0;
+  MPI_Allreduce(&nonfinite, &nonfinite_all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (nonfinite_all > 0 && !warned_nonfinite.count(this)) {
+    warned_nonfinite.insert(this);
+    if (comm->me == 0) {
+      char m[512];
+      snprintf(m, sizeof m,
+               "Compute primary/fabric: %lld particles of the group have "
+               "non-finite (NaN or inf) positions or forces at step " BIGINT_FORMAT
+               " (coincident particles, e.g. a specimen inserted twice?); "
+               "the classification of this state is meaningless",
+               nonfinite_all, update->ntimestep);
+      error->warning(FLERR, m);
+    }
   }
 
   // Each owned particle's contact ends: both ends of every contact live on
