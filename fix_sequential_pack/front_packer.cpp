@@ -676,6 +676,9 @@ void Packer::choose_vacancies() {
   for (int i = 0; i < grid_.size(); ++i)
     of_class[grid_.sphere_class(i)].push_back(i);
   std::vector<std::vector<int>> in_cell(cells);
+  // Spheres per cell (by centre), to tell where a size is over-represented.
+  std::vector<double> all_in_cell(cells, 0.0);
+  for (int i = 0; i < grid_.size(); ++i) all_in_cell[parts[part_begin[i]].first] += 1.0;
   for (int rk = nclass_ - 1; rk >= 0; --rk) {
     const int k = asc_[rk];
     std::vector<int>& v = of_class[k];
@@ -712,7 +715,14 @@ void Packer::choose_vacancies() {
     double weight_total = 0.0;
     std::vector<double> w(cells, 0.0);
     for (int c = 0; c < cells; ++c) {
-      w[c] = in_cell[c].empty() ? 0.0 : std::max(lose[c], 0.0) + 1e-300;
+      // A cell loses this size in proportion to what it has to lose and to
+      // how over-represented the size is in it: fines that crowd along the
+      // walls go first there, and the local PSD follows the global one.
+      double share = in_cell[c].size() / all_in_cell[c];
+      double global = static_cast<double>(v.size()) / grid_.size();
+      w[c] = in_cell[c].empty()
+                 ? 0.0
+                 : std::max(lose[c], 0.0) * std::pow(share / global, 3.0) + 1e-300;
       weight_total += w[c];
     }
     double step = weight_total / static_cast<double>(removals);
