@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Scene test: every example on the command page of fix sequential/pack
+(docs/fix_sequential_pack.md, section Examples) runs as written.
+
+1. The complete script runs from a folder that sees the repository's
+   input_scripts/, prints the fix's global vector and writes a full-precision
+   dump and a restart file; the dump holds as many atoms as f_sp[1] says.
+2. The one-line fix (layer-wise, start centre, group soil) runs in the
+   setting its sentence describes (a group soil defined before).
+3. The read_restart lines read the restart file of example 1 and do not
+   pack again: the atom count stays, no packing message.
+"""
+
+import os
+import re
+import shutil
+
+import scene_util as su
+
+
+def examples(page):
+    with open(page) as f:
+        text = f.read()
+    section = text[text.index("## Examples"):text.index("## Description")]
+    return [b.strip("\n") for b in re.findall(r"```\n(.*?)```", section, re.S)]
+
+
+def main():
+    args = su.parse_args(__doc__)
+    chk = su.Checker()
+    page = os.path.join(args.source, "docs", "fix_sequential_pack.md")
+    blocks = examples(page)
+    chk.check("the page has three examples (found %d)" % len(blocks),
+              len(blocks) == 3)
+    if len(blocks) != 3:
+        chk.finish()
+    root = su.fresh_dir(os.path.join(args.work, "doc_examples"))
+    os.symlink(os.path.join(args.source, "input_scripts"),
+               os.path.join(root, "input_scripts"))
+
+    # 1. the complete script, as written
+    inp = su.write_file(os.path.join(root, "in.example1"), blocks[0] + "\n")
+    res = su.run_launcher(args, inp, cwd=root, timeout=300)
+    ok = chk.check("example 1 runs as written (%.1f s)" % res.seconds,
+                   res.returncode == 0 and not res.errors(), res.describe())
+    m = re.search(r"^placed (\S+), porosity (\S+)$", res.text, re.M)
+    dump = os.path.join(root, "specimen.dump")
+    natoms = None
+    if ok and os.path.isfile(dump):
+        natoms = su.last_snapshot(dump).natoms
+    chk.check("example 1 prints f_sp[1] and f_sp[3] (%s) and the dump holds "
+              "that many atoms (%s)" % (m and m.groups(), natoms),
+              m is not None and natoms is not None
+              and float(m.group(1)) == natoms
+              and abs(float(m.group(2)) - 0.35) < 0.005)
+    chk.check("example 1 writes its restart file",
+              os.path.isfile(os.path.join(root, "packed.restart")))
+
+    # 2. the one-line fix in the setting its sentence names
+    d2 = su.fresh_dir(os.path.join(root, "example2"))
+    shutil.copy(os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
+                os.path.join(d2, "soil.txt"))
+    text = su.preamble()
+    text += ("region          box block 0 0.007 0 0.007 0 0.007 units box\n"
+             "create_box      1 box\n"
+             "region          container block 0 0.007 0 0.007 0 0.007 units box\n"
+             "group           soil region container\n"
+             "neighbor        1e-4 bin\n")
+    text += blocks[1] + "\n" + su.MATERIALS
+    text += ("run             0\n"
+             "variable        n2 equal count(soil)\n"
+             "print           \"SOIL ${n2}\"\n")
+    inp = su.write_file(os.path.join(d2, "in.example2"), text)
+    res = su.run_launcher(args, inp, cwd=d2, timeout=300)
+    chk.check("example 2 runs (%.1f s)" % res.seconds,
+              res.returncode == 0 and not res.errors(), res.describe())
+    m = re.search(r"^SOIL (\S+)$", res.text, re.M)
+    chk.check("example 2 puts its grains in group soil (%s)"
+              % (m and m.group(1)), m is not None and float(m.group(1)) > 100)
+    chk.check("example 2 packs layer-wise from the centre, 40 intervals",
+              "arrangement layerwise, start centre" in res.text
+              and "40 equal-mass intervals" in res.text, res.text[-2000:])
+
+    # 3. the read_restart lines, after example 1
+    if os.path.isfile(os.path.join(root, "packed.restart")):
+        lines = blocks[2].splitlines()
+        text = "atom_modify     map array\n" + lines[0] + "\n"
+        text += "newton          off\ncommunicate     single vel yes\n"
+        text += "\n".join(lines[1:]) + "\n" + su.MATERIALS
+        text += "run             1\n"
+        inp = su.write_file(os.path.join(root, "in.example3"), text)
+        res = su.run_launcher(args, inp, cwd=root, timeout=300)
+        chk.check("example 3 runs (%.1f s)" % res.seconds,
+                  res.returncode == 0 and not res.errors(), res.describe())
+        counts = re.findall(r"Loop time of \S+ on \d+ procs for \d+ steps "
+                            r"with (\d+) atoms", res.text)
+        chk.check("example 3 does not pack again (atoms %s, example 1 %s)"
+                  % (counts, natoms),
+                  "packing the container full" not in res.text
+                  and counts and natoms is not None
+                  and int(counts[-1]) == natoms)
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()
