@@ -494,13 +494,17 @@ void ComputePrimaryFabric::analyse() {
       partner.push_back(j);
     }
     // The wall's stress storage: fx fy fz, then the contact vector from the
-    // wall's contact point to the particle's centre (deltax..deltaz).
+    // wall's contact point to the particle's centre (deltax..deltaz), whose
+    // length is the radius less the overlap. A particle that exactly touches
+    // the wall (zero overlap, zero force) is stored too; it is no contact, as
+    // for two particles (fabric::overlaps).
     for (FixContactPropertyAtom *w : wall_contacts_)
       for (int k = 0; k < w->n_partner(i); ++k) {
         const double *F = w->contacthistory(i, k);
+        const Eigen::Vector3d wall_to_i(F[3], F[4], F[5]);
+        if (!fabric::overlaps(wall_to_i.norm(), atom->radius[i])) continue;
         walls.push_back(fabric::wall_contact(
-            index[i], Eigen::Vector3d(F[0], F[1], F[2]),
-            Eigen::Vector3d(F[3], F[4], F[5])));
+            index[i], Eigen::Vector3d(F[0], F[1], F[2]), wall_to_i));
       }
   }
 

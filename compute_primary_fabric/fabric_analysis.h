@@ -86,6 +86,18 @@ ParticleContact particle_contact(int i, int j,
 WallContact wall_contact(int i, const Eigen::Vector3d& force_on_i,
                          const Eigen::Vector3d& wall_to_i);
 
+// Whether a contact that LIGGGHTS reports is a contact here: the particle
+// overlaps its partner, i.e. the distance from the partner (the other
+// particle's centre, the wall's contact point) to the particle's centre is
+// strictly below the contact distance (r_i + r_j, or r_i for a wall). The pair
+// style already applies this test (rsq < radsum^2); LIGGGHTS' wall fixes also
+// report a particle that exactly touches a wall (zero overlap, zero force), as
+// a packing leaves its grains against the container, so the adapter asks this
+// of every wall contact: one contact definition for particles and walls.
+inline bool overlaps(double centre_distance, double contact_distance) {
+  return centre_distance < contact_distance;
+}
+
 // The load threshold of a loaded contact.
 //   absolute F: F in force units.
 //   relative f: f times the mean normal force of all contacts (particle and

@@ -86,6 +86,15 @@ TEST(Classification, WallContactsCountLikeParticleContacts) {
   EXPECT_EQ(c.fraction, fractions({1, 1, 0, 0}));
 }
 
+TEST(Classification, AContactNeedsAPositiveOverlap) {
+  // The pair style's test rsq < radsum^2, for walls too: a grain that exactly
+  // touches a wall (as the packer leaves it) is no contact.
+  EXPECT_TRUE(overlaps(0.999, 1.0));
+  EXPECT_FALSE(overlaps(1.0, 1.0));
+  EXPECT_FALSE(overlaps(1.001, 1.0));
+  EXPECT_FALSE(overlaps(std::nan(""), 1.0));
+}
+
 // ---------------------------------------------------------------- threshold
 
 TEST(Threshold, ExactlyAtTheThresholdIsNotLoaded) {
