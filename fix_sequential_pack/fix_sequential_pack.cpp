@@ -284,7 +284,33 @@ void FixSequentialPack::parse(int narg, char **arg) {
          " particles): use a smaller region or a coarser PSD");
   if (list_.total() < 3)
     fail("the container holds only " + std::to_string(list_.total()) +
-         " particles of this PSD; at least 3 are needed: use a larger region");
+         " particles of this PSD in " + std::to_string(nintervals_) +
+         " intervals; at least 3 are needed: use a larger region, a lower "
+         "porosity or fewer intervals");
+  // Intervals that round to no grain leave their mass share out of the
+  // specimen: say which, and how large a container keeps them all.
+  std::string empty;
+  int nempty = 0;
+  double grow = 1.0;  // volume factor that gives every interval 1 grain
+  for (size_t k = 0; k < list_.count.size(); ++k)
+    if (list_.count[k] == 0) {
+      ++nempty;
+      if (nempty <= 3) empty += (empty.empty() ? "" : ", ") + std::to_string(k + 1);
+      grow = std::max(grow, 0.5 / std::max(list_.target_count[k], 1e-300));
+    }
+  if (nempty > 0 && comm->me == 0) {
+    char w[512];
+    snprintf(w, sizeof w,
+             "Fix sequential/pack: %d of %d intervals hold no grain in this "
+             "container (interval%s %s%s: target counts below 0.5 round to "
+             "0), so %.0f %% of the PSD's mass is missing from the specimen. "
+             "Use a container at least %.3g times the volume (edges %.3g "
+             "times longer) or fewer intervals",
+             nempty, nintervals_, nempty > 1 ? "s" : "", empty.c_str(),
+             nempty > 3 ? ", ..." : "", 100.0 * nempty / nintervals_, grow,
+             std::cbrt(grow));
+    error->warning(FLERR, w);
+  }
 }
 
 int FixSequentialPack::setmask() { return PRE_EXCHANGE; }
@@ -558,13 +584,32 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
            seconds > 0 ? res.placed() / seconds : 0.0);
   s << b;
   message(s.str());
-  if (not_placed > 0) {
+  if (not_placed > 0 && natural > porosity_ - 0.01) {
+    // The list does not fit: the target is (nearly) as dense as the
+    // container packed full.
     snprintf(b, sizeof b,
              "Fix sequential/pack: %lld of %lld particles not placed (see "
              "not_placed per interval): the container packed full holds "
-             "porosity %.4f, so a target of %.4f leaves no room for them. "
-             "Use a porosity of at least %.3f or a larger container",
-             not_placed, list_.total(), natural, porosity_, natural + 0.01);
+             "porosity %.4f, too close to the target %.4f to hold the whole "
+             "list. Use a porosity of at least %.3f",
+             not_placed, list_.total(), natural, porosity_, natural + 0.015);
+    error->warning(FLERR, b);
+  } else if (not_placed > 0) {
+    // There was room, but not for the last coarse grains under the lid.
+    std::string which;
+    for (size_t k = 0; k < n; ++k)
+      if (res.unplaced_per_class[k] > 0)
+        which += (which.empty() ? "" : ", ") + std::to_string(k + 1);
+    double edge = std::min({hi_[0] - lo_[0], hi_[1] - lo_[1], hi_[2] - lo_[2]}) /
+                  intervals_.back().d_mean;
+    snprintf(b, sizeof b,
+             "Fix sequential/pack: %lld of %lld particles not placed "
+             "(interval %s): the container packed full holds porosity %.4f, "
+             "room enough for the target %.4f, but these grains came too "
+             "late to find a place large enough. The container is %.1f "
+             "coarsest diameters wide: use at least 6",
+             not_placed, list_.total(), which.c_str(), natural, porosity_,
+             edge);
     error->warning(FLERR, b);
   } else if (std::abs(achieved - porosity_) > 0.005) {
     snprintf(b, sizeof b,
@@ -621,15 +666,37 @@ double FixSequentialPack::memory_usage() {
   return atom->nmax * sizeof(double);
 }
 
+// The restart holds the inserted flag and the settings the specimen was
+// packed with, so a redefinition with other settings is told apart.
 void FixSequentialPack::write_restart(FILE *fp) {
-  double list[1] = {static_cast<double>(inserted_)};
+  double list[5] = {static_cast<double>(inserted_), porosity_,
+                    arrangement_ == fabric::Arrangement::discrete ? 0.0 : 1.0,
+                    static_cast<double>(seed_), static_cast<double>(nintervals_)};
   if (comm->me == 0) {
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 1, fp);
+    fwrite(list, sizeof(double), 5, fp);
   }
 }
 
 void FixSequentialPack::restart(char *buf) {
-  inserted_ = static_cast<int>(reinterpret_cast<double *>(buf)[0]);
+  const double *list = reinterpret_cast<double *>(buf);
+  inserted_ = static_cast<int>(list[0]);
+  if (!inserted_ || comm->me != 0) return;
+  fabric::Arrangement was = list[2] == 0.0 ? fabric::Arrangement::discrete
+                                           : fabric::Arrangement::layerwise;
+  if (list[1] != porosity_ || was != arrangement_ || list[3] != seed_ ||
+      list[4] != nintervals_) {
+    char w[512];
+    snprintf(w, sizeof w,
+             "Fix sequential/pack: the specimen restored from the restart "
+             "file was packed with porosity %g, arrangement %s, seed %.0f, "
+             "%.0f intervals; this definition says porosity %g, arrangement "
+             "%s, seed %d, %d intervals. The restored specimen is kept (no "
+             "new packing)",
+             list[1], fabric::to_string(was).c_str(), list[3], list[4],
+             porosity_, fabric::to_string(arrangement_).c_str(), seed_,
+             nintervals_);
+    error->warning(FLERR, w);
+  }
 }

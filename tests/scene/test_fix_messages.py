@@ -1,0 +1,99 @@
+#!/usr/bin/python3
+"""Scene test: fix sequential/pack says what is true, and only then.
+
+1. A near-empty container (porosity 0.999) keeps only a few grains: the
+   fix warns which intervals round to no grain and how much larger the
+   container must be; a well-sized specimen gets no such warning and no
+   'not placed' warning.
+2. After read_restart, the same fix ID with other settings keeps the
+   restored specimen and says so, naming both settings; the same settings
+   say nothing.
+"""
+
+import os
+import re
+
+import scene_util as su
+
+EDGE = 5.6e-3
+FIX = "pack"
+
+
+def fix_line(psd, porosity, seed):
+    return ("fix             %s all sequential/pack psd %s porosity %s "
+            "arrangement discrete region container seed %d verbose no\n"
+            % (FIX, psd, su.num(porosity), seed))
+
+
+def main():
+    args = su.parse_args(__doc__)
+    chk = su.Checker()
+    psd = os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt")
+    root = su.fresh_dir(os.path.join(args.work, "fix_messages"))
+
+    # 1. empty intervals
+    inp = su.write_file(os.path.join(root, "in.sparse"), su.pack_scene(
+        psd, EDGE, porosity=0.999, fix_id=FIX, extra_fix="verbose no"))
+    res = su.run_launcher(args, inp)
+    m = re.search(r"WARNING: Fix sequential/pack: (\d+) of 20 intervals hold "
+                  r"no grain.*?at least (\S+) times the volume", res.text)
+    chk.check("porosity 0.999: a warning names the empty intervals and the "
+              "container needed (%s)" % str(m and m.groups()),
+              res.returncode == 0 and m is not None and int(m.group(1)) > 0
+              and float(m.group(2)) > 1.0, res.text[-3000:])
+    inp = su.write_file(os.path.join(root, "in.dense"), su.pack_scene(
+        psd, 6 * 1.603e-3, porosity=0.35, fix_id=FIX, extra_fix="verbose no"))
+    res = su.run_launcher(args, inp)
+    chk.check("porosity 0.35 in 6 coarsest diameters: no warning",
+              res.returncode == 0 and "WARNING: Fix sequential/pack"
+              not in res.text, res.text[-3000:])
+    inp = su.write_file(os.path.join(root, "in.small"), su.pack_scene(
+        psd, EDGE, porosity=0.35, fix_id=FIX, extra_fix="verbose no"))
+    res = su.run_launcher(args, inp)
+    vec = su.pack_vector(res.text)
+    missing = vec and vec["listed"] - vec["placed"]
+    if missing:
+        chk.check("porosity 0.35 in 3.2 coarsest diameters, %d not placed: "
+                  "the warning says the container is too small, not the "
+                  "porosity too low" % missing,
+                  "found no" not in res.text and "too late to find a place"
+                  in res.text and "use at least 6" in res.text
+                  and "Use a porosity" not in res.text, res.text[-3000:])
+    else:
+        chk.check("porosity 0.35 in 3.2 coarsest diameters, all placed: no "
+                  "not-placed warning", "not placed (" not in res.text)
+
+    # 2. redefinition after read_restart with other settings
+    restart = os.path.join(root, "packed.restart")
+    text = su.header(EDGE)
+    text += su.block_region("container", (0, 0, 0), (EDGE, EDGE, EDGE))
+    text += fix_line(psd, 0.4, 3) + su.MATERIALS
+    text += "run             1\nwrite_restart   %s\n" % restart
+    res = su.run_launcher(args, su.write_file(os.path.join(root, "in.write"),
+                                              text))
+    chk.check("a specimen is packed and saved", res.returncode == 0
+              and os.path.isfile(restart), res.describe())
+    for porosity, seed, expect in ((0.4, 3, False), (0.37, 9, True)):
+        text = ("atom_modify     map array\nread_restart    %s\n"
+                "newton          off\ncommunicate     single vel yes\n"
+                % restart)
+        text += su.block_region("container", (0, 0, 0), (EDGE, EDGE, EDGE))
+        text += fix_line(psd, porosity, seed) + su.MATERIALS + "run 1\n"
+        res = su.run_launcher(args, su.write_file(
+            os.path.join(root, "in.read_%d" % seed), text))
+        said = re.search(r"WARNING: Fix sequential/pack: the specimen restored "
+                         r"from the restart file was packed with porosity 0.4"
+                         r".*?seed 3.*?porosity 0.37.*?seed 9", res.text,
+                         re.S) is not None
+        chk.check("read_restart, porosity %s seed %d: %s" % (
+                      su.num(porosity), seed,
+                      "warns with both settings" if expect else "no warning"),
+                  res.returncode == 0 and said == expect
+                  and "packing the container full" not in res.text
+                  and ("restored from the restart" in res.text) == expect,
+                  res.text[-3000:])
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()
