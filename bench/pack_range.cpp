@@ -1,0 +1,207 @@
+// Which target porosities the packer reaches completely and uniformly, per
+// soil and arrangement. A benchmark, not a test: it prints figures and
+// checks nothing. Run from the repository root:
+//   build/bench/pack_range [psd-file ...] [--side S] [--targets a,b,...]
+//                          [--seed K]
+// Defaults: the four shipped soils (input_scripts/psd/cu2.0.txt .. cu3.5.txt),
+// side 6 coarsest-interval diameters, targets 0.33, 0.34, ..., 0.45, seed 1.
+//
+// Per soil and rule:
+//  (a) the porosity of the container packed full, the lowest porosity the
+//      packing reaches: packed at target 0.25 (a list longer than the
+//      container holds), 1 - packed_volume / V;
+//  (b) per target: the share of the list placed, the achieved porosity
+//      (placed spheres only), min and max of the 27 sub-cube porosities, the
+//      interior porosity (layer one coarsest diameter), Spearman(radius,
+//      distance from the centre), the size assortativity of touching pairs,
+//      the full-packing porosity of that run, the time, and whether the
+//      case is complete and uniform:
+//        placed >= 99.5 % of the list, |achieved - target| <= 0.005,
+//        all 27 sub-cubes within 0.03 of the target, interior within 0.01.
+//      The flags name what fails: P placed, A achieved, S sub-cubes,
+//      I interior.
+// At the end, per soil and rule, the lowest and highest target tested that
+// is complete and uniform.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "front_packer.h"
+#include "psd.h"
+#include "specimen_measure.h"
+
+using namespace fabric;
+
+namespace {
+
+struct Run {
+  long long listed = 0;
+  PackingResult result;
+  double volume = 0.0;
+  double seconds = 0.0;
+  Box box;
+  double dmax = 0.0;
+};
+
+Run run(const std::vector<SizeInterval>& intervals, double side, double porosity,
+        Arrangement a, std::uint64_t seed) {
+  Run out;
+  double L = side * intervals.back().d_mean;
+  out.volume = L * L * L;
+  auto list = particle_list(intervals, out.volume, porosity);
+  PackingSpec spec;
+  spec.lo = Vec3(0, 0, 0);
+  spec.hi = Vec3(L, L, L);
+  for (size_t k = 0; k < intervals.size(); ++k) {
+    spec.radius.push_back(0.5 * list.diameter[k]);
+    spec.count.push_back(list.count[k]);
+  }
+  spec.arrangement = a;
+  spec.seed = seed;
+  out.listed = list.total();
+  out.box = Box{spec.lo, spec.hi};
+  out.dmax = *std::max_element(list.diameter.begin(), list.diameter.end());
+  auto t0 = std::chrono::steady_clock::now();
+  out.result = pack(spec);
+  out.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+std::vector<double> parse_list(const std::string& s) {
+  std::vector<double> v;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) v.push_back(std::atof(item.c_str()));
+  return v;
+}
+
+std::string base_name(const std::string& path) {
+  std::string f = path.substr(path.find_last_of('/') + 1);
+  return f.substr(0, f.rfind('.'));
+}
+
+struct Summary {
+  std::string soil, rule;
+  double full = NAN;
+  std::vector<double> ok, tested;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> psds;
+  double side = 6.0;
+  std::uint64_t seed = 1;
+  std::vector<double> targets;
+  for (double t = 0.33; t < 0.4550; t += 0.01) targets.push_back(std::round(t * 100) / 100);
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--side" && i + 1 < argc) side = std::atof(argv[++i]);
+    else if (a == "--targets" && i + 1 < argc) targets = parse_list(argv[++i]);
+    else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
+    else if (a.rfind("--", 0) == 0) {
+      std::fprintf(stderr,
+                   "usage: pack_range [psd-file ...] [--side S] "
+                   "[--targets a,b,...] [--seed K]\n");
+      return 2;
+    } else psds.push_back(a);
+  }
+  if (psds.empty())
+    for (const char* c : {"2.0", "2.5", "3.0", "3.5"})
+      psds.push_back(std::string("input_scripts/psd/cu") + c + ".txt");
+  if (!(side > 0) || targets.empty()) {
+    std::fprintf(stderr, "pack_range: side must be > 0 and targets not empty\n");
+    return 2;
+  }
+
+  std::printf("# side %.3g coarsest-interval diameters, 20 intervals, seed %llu, "
+              "start floor; complete and uniform: placed >= 99.5 %%, "
+              "|achieved - target| <= 0.005, 27 sub-cubes within 0.03, interior "
+              "(layer 1 coarsest diameter) within 0.01\n",
+              side, static_cast<unsigned long long>(seed));
+  std::printf("%-6s %-9s %6s %8s %8s %8s %7s %7s %8s %8s %7s %7s %7s %7s %s\n",
+              "soil", "rule", "target", "listed", "placed%", "achieved",
+              "sub_min", "sub_max", "interior", "spearman", "assort", "full",
+              "seconds", "c&u", "fails");
+  std::fflush(stdout);
+
+  std::vector<Summary> summary;
+  for (const std::string& path : psds) {
+    auto psd = ParticleSizeDistribution::read(path);
+    auto intervals = psd.equal_mass_intervals(20);
+    for (Arrangement a : {Arrangement::discrete, Arrangement::layerwise}) {
+      Summary sm;
+      sm.soil = base_name(path);
+      sm.rule = to_string(a);
+      {
+        Run f = run(intervals, side, 0.25, a, seed);
+        sm.full = 1.0 - f.result.packed_volume / f.volume;
+        std::printf("%-6s %-9s %6s %8lld %8.2f %8s %7s %7s %8s %8s %7s %7.4f %7.1f %7s %s\n",
+                    sm.soil.c_str(), sm.rule.c_str(), "0.25", f.listed,
+                    100.0 * f.result.placed() / f.listed, "-", "-", "-", "-",
+                    "-", "-", sm.full, f.seconds, "-", "(packed full)");
+        std::fflush(stdout);
+      }
+      for (double target : targets) {
+        Run r = run(intervals, side, target, a, seed);
+        const PackingResult& p = r.result;
+        double vol = 0.0;
+        for (double rr : p.radius) vol += 4.0 / 3.0 * M_PI * rr * rr * rr;
+        double achieved = 1.0 - vol / r.volume;
+        double placed = double(p.placed()) / r.listed;
+        PackingMeasure m(p.centre, p.radius, r.box);
+        auto sub = m.subcube_porosity(3);
+        double lo = *std::min_element(sub.begin(), sub.end());
+        double hi = *std::max_element(sub.begin(), sub.end());
+        double interior = m.interior_porosity(r.dmax);
+        double spearman = m.radius_distance_spearman();
+        double assort = m.size_assortativity();
+        double full = 1.0 - p.packed_volume / r.volume;
+        std::string fails;
+        if (!(placed >= 0.995)) fails += "P";
+        if (!(std::fabs(achieved - target) <= 0.005)) fails += "A";
+        if (!(lo >= target - 0.03 && hi <= target + 0.03)) fails += "S";
+        if (!(std::fabs(interior - target) <= 0.01)) fails += "I";
+        bool ok = fails.empty();
+        sm.tested.push_back(target);
+        if (ok) sm.ok.push_back(target);
+        std::printf("%-6s %-9s %6.2f %8lld %8.2f %8.4f %7.4f %7.4f %8.4f %8.3f %7.3f %7.4f %7.1f %7s %s\n",
+                    sm.soil.c_str(), sm.rule.c_str(), target, r.listed,
+                    100.0 * placed, achieved, lo, hi, interior, spearman, assort,
+                    full, r.seconds, ok ? "yes" : "no", fails.c_str());
+        std::fflush(stdout);
+      }
+      summary.push_back(sm);
+    }
+  }
+
+  std::printf("\n# per soil and rule: porosity packed full, and the lowest and "
+              "highest target tested that is complete and uniform\n");
+  std::printf("%-6s %-9s %7s %7s %7s %s\n", "soil", "rule", "full", "lowest",
+              "highest", "complete and uniform / tested");
+  for (const Summary& s : summary) {
+    std::string which;
+    for (double t : s.ok) {
+      char b[16];
+      std::snprintf(b, sizeof b, "%s%.2f", which.empty() ? "" : " ", t);
+      which += b;
+    }
+    if (s.ok.empty())
+      std::printf("%-6s %-9s %7.4f %7s %7s 0 / %zu\n", s.soil.c_str(),
+                  s.rule.c_str(), s.full, "-", "-", s.tested.size());
+    else
+      std::printf("%-6s %-9s %7.4f %7.2f %7.2f %zu / %zu: %s\n", s.soil.c_str(),
+                  s.rule.c_str(), s.full, s.ok.front(), s.ok.back(), s.ok.size(),
+                  s.tested.size(), which.c_str());
+  }
+  std::fflush(stdout);
+  return 0;
+}
