@@ -12,6 +12,6 @@ bash tools/build.sh
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mkdir -p out
 mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log "$@" \
-  | grep -E "^(TIMESTEP|DAMPING|SERVO|LOADED|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity:|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ "
+  | grep -E "^(TIMESTEP|DAMPING|SERVO|LOADED|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity by volume:|packed full|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ "
 /usr/bin/python3 tools/plot_fabric.py out/oedometer
 echo "ParaView: out/oedometer/grains_*.vtk (colour by c_pf[2]: 1 primary fabric, 0 loose), out/oedometer/contacts_*.vtp"
