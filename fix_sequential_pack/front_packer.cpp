@@ -133,6 +133,7 @@ class Packer {
   };
   std::vector<Front> front_;  // per level: key and order of its heap's top
   int choose_grain(const Site& s, int level);
+  int take_from_deck(const double* w, int n, double total);
   int draw_by_number();
   int place(const Vec3& c, int k, Placement how);
   bool try_site(const Site& s, int k);
@@ -458,18 +459,7 @@ int Packer::draw_by_number() {
       w[i] = static_cast<double>(deck_[k]) * boost_[i];
       total += w[i];
     }
-    if (total > 0.0) {
-      double pick = rng_.uniform() * total;
-      int i = 0;
-      for (; i < blocked_ - 1; ++i) {
-        if (w[i] > 0.0 && pick < w[i]) break;
-        pick -= w[i];
-      }
-      while (w[i] == 0.0) --i;
-      int k = asc_[i];
-      --deck_[k], --deck_total_;
-      return k;
-    }
+    if (total > 0.0) return take_from_deck(w, blocked_, total);
     new_deck();  // this one holds no size that fits: the next deck opens
   }
   return -1;
@@ -508,13 +498,19 @@ int Packer::choose_grain(const Site& s, int level) {
     total += w[i];
   }
   if (!(total > 0.0)) return -1;
+  return take_from_deck(w, level + 1, total);
+}
+
+// Draws a rank with probability w[i] / total (i < n, total > 0) and takes a
+// grain of that size out of the deck.
+int Packer::take_from_deck(const double* w, int n, double total) {
   double pick = rng_.uniform() * total;
   int i = 0;
-  for (; i < level; ++i) {
+  for (; i < n - 1; ++i) {
     if (w[i] > 0.0 && pick < w[i]) break;
     pick -= w[i];
   }
-  while (w[i] == 0.0) --i;
+  while (w[i] == 0.0) --i;  // rounding at the end of the range
   int k = asc_[i];
   --deck_[k], --deck_total_;
   return k;
