@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
       double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       double s = double(std::clock() - c0) / CLOCKS_PER_SEC;
       double vol = 0.0;
-      for (double rr : r.radius) vol += 4.0 / 3.0 * M_PI * rr * rr * rr;
+      for (double rr : r.radius) vol += sphere_volume(2.0 * rr);
       std::printf("%-10s %9lld %9lld %8lld %9.3f %9.3f %12.0f %11.2f %10.0f %9.4f %9.4f\n",
                   to_string(a).c_str(), list.total(), r.placed(), r.unplaced(), wall, s,
                   r.placed() / s, 1e6 * s / r.placed(),

@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
         Run r = run(intervals, side, target, a, seed);
         const PackingResult& p = r.result;
         double vol = 0.0;
-        for (double rr : p.radius) vol += 4.0 / 3.0 * M_PI * rr * rr * rr;
+        for (double rr : p.radius) vol += sphere_volume(2.0 * rr);
         double achieved = 1.0 - vol / r.volume;
         double placed = double(p.placed()) / r.listed;
         PackingMeasure m(p.centre, p.radius, r.box);

@@ -65,10 +65,10 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
       seed_(0),
       fill_pores_(true),
       verbose_(true),
-      inserted_(0),
       start_(fabric::Start::floor),
       layering_(fabric::PackingSpec().layering),
       summary_{0, 0, 0, 0, 0, 0},
+      inserted_(0),
       interval_(nullptr),
       nmax_(0) {
   // A fix defined again with an existing ID replaces the old one: LIGGGHTS
@@ -417,7 +417,7 @@ void FixSequentialPack::insert_specimen() {
     double r = res.radius[i];
     atom->radius[m] = r;
     atom->density[m] = density_;
-    atom->rmass[m] = 4.0 * M_PI / 3.0 * r * r * r * density_;
+    atom->rmass[m] = fabric::sphere_volume(2.0 * r) * density_;
     for (int j = 0; j < modify->nfix; ++j)
       if (modify->fix[j]->create_attribute) modify->fix[j]->set_arrays(m);
     interval_[m] = res.size_class[i] + 1;

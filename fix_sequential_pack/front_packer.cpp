@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "psd.h"
 #include "sphere_grid.h"
 
 namespace fabric {
@@ -225,7 +226,7 @@ Packer::Packer(const PackingSpec& spec)
   for (int k = 0; k < nclass_; ++k) {
     double r = spec.radius[k];
     log_radius_.push_back(std::log(r));
-    volume_.push_back(4.0 / 3.0 * M_PI * r * r * r);
+    volume_.push_back(sphere_volume(2.0 * r));
     if (spec.count[k] > 0) rmin = std::min(rmin, r), rmax = std::max(rmax, r);
   }
   for (int a = 0; a < 3; ++a)

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "psd.h"
+
 namespace fabric {
 
 namespace {
@@ -165,7 +167,7 @@ double sphere_box_volume(const Vec3& c, double r, const Box& b) {
     if (lo[k] > -r) ++cuts, a = lo[k];
     if (hi[k] < r) ++cuts, a = -hi[k];
   }
-  if (cuts == 0) return 4.0 / 3.0 * kPi * r * r * r;
+  if (cuts == 0) return sphere_volume(2.0 * r);
   if (cuts == 1) return cap_volume(r, a);
 
   // Integrate the disc-rectangle area along the axis where the box is

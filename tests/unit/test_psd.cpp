@@ -63,7 +63,9 @@ TEST(Psd, EqualMassIntervalsOfALogUniformSoil) {
     EXPECT_NEAR(iv[k].d_upper, v, 1e-9 * v);
     // mass-weighted mean where mass is uniform in log d
     EXPECT_NEAR(iv[k].d_mean, (v - u) / std::log(v / u), 1e-9 * v);
-    if (k > 0) EXPECT_GT(iv[k].d_mean, iv[k - 1].d_mean);
+    if (k > 0) {
+      EXPECT_GT(iv[k].d_mean, iv[k - 1].d_mean);
+    }
   }
   EXPECT_NEAR(mass, 1.0, 1e-12);
 }

@@ -184,13 +184,17 @@ TEST(Trilateration, FuzzedInputGivesNoNaN) {
       if (rng.g() % 10 == 0) q.radius = specials[rng.g() % 7];
     }
     double r4 = rng.g() % 10 ? rng.log_uniform(1e-6, 1e6) : specials[rng.g() % 7];
-    if (auto m = fabric::trilaterate(s[0], s[1], s[2], r4))
+    if (auto m = fabric::trilaterate(s[0], s[1], s[2], r4)) {
       ASSERT_TRUE(m->positive.allFinite() && m->negative.allFinite());
-    if (auto c = fabric::constriction(s[0], s[1], s[2]))
+    }
+    if (auto c = fabric::constriction(s[0], s[1], s[2])) {
       ASSERT_TRUE(c->centre.allFinite() && std::isfinite(c->radius));
-    if (auto p = fabric::touch_two_in_plane(s[0], s[1], s[2].centre, r4))
+    }
+    if (auto p = fabric::touch_two_in_plane(s[0], s[1], s[2].centre, r4)) {
       ASSERT_TRUE(p->allFinite());
-    if (auto w = fabric::touch_two_and_plane(s[0], s[1], s[2].centre, Vec3(0, 0, 1), r4))
+    }
+    if (auto w = fabric::touch_two_and_plane(s[0], s[1], s[2].centre, Vec3(0, 0, 1), r4)) {
       ASSERT_TRUE(w->positive.allFinite() && w->negative.allFinite());
+    }
   }
 }
