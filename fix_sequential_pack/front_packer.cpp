@@ -141,6 +141,7 @@ class Packer {
   void first_face();
   void choose_vacancies();
   void second_loop();
+  void fill_vacancy(int hole, int k);
   void report_progress();
 
   const PackingSpec& spec_;
@@ -771,15 +772,7 @@ void Packer::second_loop() {
       int hole = holes[pick];
       holes[pick] = holes.back();
       holes.pop_back();
-      vacant_[hole] = 2;  // filled
-      res_.centre.push_back(grid_.centre(hole));
-      res_.radius.push_back(spec_.radius[k]);
-      res_.size_class.push_back(k);
-      res_.placement.push_back(Placement::vacancy);
-      ++res_.placed_per_class[k];
-      ++res_.placed_by[static_cast<int>(Placement::vacancy)];
-      ++res_.placed_in_second_loop;
-      --missing_[k];
+      fill_vacancy(hole, k);
     }
   }
   // A grain still missing (no vacancy of its size) goes, if it fits among
@@ -805,17 +798,22 @@ void Packer::second_loop() {
       if (!inside(c, r) || real.overlaps(c, r, spec_.overlap_tolerance)) continue;
       real.insert(c, k);
       holes[h] = -1;
-      vacant_[hole] = 2;
-      res_.centre.push_back(c);
-      res_.radius.push_back(r);
-      res_.size_class.push_back(k);
-      res_.placement.push_back(Placement::vacancy);
-      ++res_.placed_per_class[k];
-      ++res_.placed_by[static_cast<int>(Placement::vacancy)];
-      ++res_.placed_in_second_loop;
-      --missing_[k];
+      fill_vacancy(hole, k);
     }
   }
+}
+
+// A missing grain of class k goes to the centre of vacancy `hole`.
+void Packer::fill_vacancy(int hole, int k) {
+  vacant_[hole] = 2;  // filled
+  res_.centre.push_back(grid_.centre(hole));
+  res_.radius.push_back(spec_.radius[k]);
+  res_.size_class.push_back(k);
+  res_.placement.push_back(Placement::vacancy);
+  ++res_.placed_per_class[k];
+  ++res_.placed_by[static_cast<int>(Placement::vacancy)];
+  ++res_.placed_in_second_loop;
+  --missing_[k];
 }
 
 void Packer::report_progress() {
