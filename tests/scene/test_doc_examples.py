@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Scene test: every example on the command page of fix sequential/pack
-(docs/fix_sequential_pack.md, section Examples) runs as written.
+"""Scene test: the examples on the command pages run as written.
+
+fix sequential/pack (docs/fix_sequential_pack.md, section Examples):
 
 1. The complete script runs from a folder that sees the repository's
    input_scripts/, prints the fix's global vector and writes a full-precision
@@ -9,6 +10,11 @@
    setting its sentence describes (a group soil defined before).
 3. The read_restart lines read the restart file of example 1 and do not
    pack again: the atom count stays, no packing message.
+
+compute primary/fabric (docs/compute_primary_fabric.md, section Examples):
+4. The complete scene runs as written and prints what the page says it
+   prints (the sentence after it quotes the thermo line of step 0).
+5. The output lines (thermo_style, fix ave/time, dump) run in that scene.
 """
 
 import os
@@ -18,11 +24,12 @@ import shutil
 import scene_util as su
 
 
-def examples(page):
+def examples(page, with_text=False):
     with open(page) as f:
         text = f.read()
     section = text[text.index("## Examples"):text.index("## Description")]
-    return [b.strip("\n") for b in re.findall(r"```\n(.*?)```", section, re.S)]
+    blocks = [b.strip("\n") for b in re.findall(r"```\n(.*?)```", section, re.S)]
+    return (blocks, section) if with_text else blocks
 
 
 def main():
@@ -99,7 +106,45 @@ def main():
                   "packing the container full" not in res.text
                   and counts and natoms is not None
                   and int(counts[-1]) == natoms)
+    compute_examples(args, chk, root)
     chk.finish()
+
+
+def compute_examples(args, chk, root):
+    page = os.path.join(args.source, "docs", "compute_primary_fabric.md")
+    blocks, section = examples(page, with_text=True)
+    scene = [b for b in blocks if b.startswith("units")]
+    outputs = [b for b in blocks if b.startswith("thermo_style")]
+    chk.check("the compute page has a complete scene and an output example",
+              len(scene) == 1 and len(outputs) == 1)
+    if len(scene) != 1 or len(outputs) != 1:
+        return
+    d = su.fresh_dir(os.path.join(root, "compute"))
+    inp = su.write_file(os.path.join(d, "in.scene"), scene[0] + "\n")
+    res = su.run_launcher(args, inp, cwd=d)
+    ok = chk.check("the compute page's scene runs as written (%.1f s)"
+                   % res.seconds, res.returncode == 0 and not res.errors(),
+                   res.describe())
+    # The page: "It prints `4 1 25 75 4 4 350`: ..."
+    claim = re.search(r"It prints `([^`]*)`", section)
+    printed = re.search(r"^\s*0\s+(.*)$", res.text, re.M) if ok else None
+    want = claim.group(1).split() if claim else []
+    got = printed.group(1).split() if printed else []
+    chk.check("it prints what the page says (page %s, run %s)" % (want, got),
+              bool(want) and len(got) == len(want) and all(
+                  abs(float(g) - float(w)) <= 1e-6 * max(1.0, abs(float(w)))
+                  for g, w in zip(got, want)), res.text[-2000:])
+    # The output lines, in place of the scene's own thermo and dump lines.
+    lines = [l for l in scene[0].splitlines()
+             if not l.startswith(("thermo_style", "dump", "run"))]
+    text = "\n".join(lines) + "\n" + outputs[0] + "\nrun 0\n"
+    inp = su.write_file(os.path.join(d, "in.outputs"), text)
+    res = su.run_launcher(args, inp, cwd=d)
+    chk.check("the compute page's output lines run in that scene",
+              res.returncode == 0 and not res.errors()
+              and os.path.isfile(os.path.join(d, "fabric_vs_time.txt"))
+              and os.path.isfile(os.path.join(d, "fabric_intervals.txt")),
+              res.describe())
 
 
 if __name__ == "__main__":
