@@ -71,43 +71,12 @@ struct Later {
   }
 };
 
-// The container volume within a distance of its centre, from a lattice of
-// distances grouped into buckets (start centre: the volume the front swept).
-class SweptByDistance {
- public:
-  SweptByDistance() = default;
-  SweptByDistance(const Vec3& lo, const Vec3& hi) {
-    const int n = 48;
-    Vec3 ext = hi - lo, c = 0.5 * (lo + hi);
-    std::vector<double> d;
-    d.reserve(n * n * n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        for (int k = 0; k < n; ++k)
-          d.push_back((lo + Vec3((i + 0.5) / n * ext[0], (j + 0.5) / n * ext[1],
-                                 (k + 0.5) / n * ext[2]) - c).norm());
-    std::sort(d.begin(), d.end());
-    dist_ = std::move(d);
-    volume_ = ext.prod();
-  }
-  double operator()(double r) const {
-    auto n = std::lower_bound(dist_.begin(), dist_.end(), r) - dist_.begin();
-    return volume_ * static_cast<double>(n) / static_cast<double>(dist_.size());
-  }
-
- private:
-  std::vector<double> dist_;
-  double volume_ = 0.0;
-};
-
 constexpr long long kDeckExtra = 2;
 // How much faster than by number the coarsest size is drawn (x^2 between).
 constexpr double kCoarseBoost = 0.6;
-// LA: how strongly a size that falls behind the deck is favoured: e^(20 x)
+// LA: how strongly a size that falls behind the deck is favoured: e^(100 x)
 // for a size x (as a share of its deck) behind the deck as a whole.
 constexpr double kCatchUp = 100.0;
-// Cells of the vacancy choice: about this many coarsest diameters wide.
-constexpr double kCellDiameters = 1.0;
 // The vacancy choice of a coarse class: candidates weighed per vacancy.
 constexpr int kVacancyCandidates = 24;
 
@@ -172,7 +141,6 @@ class Packer {
   Random rng_, vacancy_rng_;
   Vec3 centre_;
   double gap_ = 0.0;             // supports of a site lie within this gap
-  SweptByDistance swept_by_distance_;
   std::uint32_t next_order_ = 0;
   std::vector<int> near_;        // scratch: neighbours of a new sphere
   std::size_t peak_sites_ = 0, live_sites_ = 0;
@@ -253,8 +221,6 @@ Packer::Packer(const PackingSpec& spec)
   missing_.assign(nclass_, 0);
   deck_.assign(nclass_, 0);
   deck_size_.assign(nclass_, 0);
-  if (spec.start == Start::centre)
-    swept_by_distance_ = SweptByDistance(spec.lo, spec.hi);
 }
 
 bool Packer::inside(const Vec3& c, double r) const {
