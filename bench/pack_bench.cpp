@@ -51,13 +51,7 @@ int main(int argc, char** argv) {
       double L = std::cbrt(n / per_volume);
       double V = L * L * L;
       auto list = particle_list(intervals, V, porosity);
-      PackingSpec spec;
-      spec.lo = Vec3(0, 0, 0);
-      spec.hi = Vec3(L, L, L);
-      for (size_t k = 0; k < intervals.size(); ++k) {
-        spec.radius.push_back(0.5 * list.diameter[k]);
-        spec.count.push_back(list.count[k]);
-      }
+      PackingSpec spec = packing_spec(list, Vec3(0, 0, 0), Vec3(L, L, L));
       spec.arrangement = a;
       spec.seed = 1;
       std::clock_t c0 = std::clock();

@@ -55,13 +55,7 @@ Run run(const std::vector<SizeInterval>& intervals, double side, double porosity
   double L = side * intervals.back().d_mean;
   out.volume = L * L * L;
   auto list = particle_list(intervals, out.volume, porosity);
-  PackingSpec spec;
-  spec.lo = Vec3(0, 0, 0);
-  spec.hi = Vec3(L, L, L);
-  for (size_t k = 0; k < intervals.size(); ++k) {
-    spec.radius.push_back(0.5 * list.diameter[k]);
-    spec.count.push_back(list.count[k]);
-  }
+  PackingSpec spec = packing_spec(list, Vec3(0, 0, 0), Vec3(L, L, L));
   spec.arrangement = a;
   spec.seed = seed;
   out.listed = list.total();

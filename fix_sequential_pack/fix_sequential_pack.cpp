@@ -345,13 +345,9 @@ void FixSequentialPack::setup_pre_exchange() {
 }
 
 void FixSequentialPack::insert_specimen() {
-  fabric::PackingSpec spec;
-  spec.lo = fabric::Vec3(lo_[0], lo_[1], lo_[2]);
-  spec.hi = fabric::Vec3(hi_[0], hi_[1], hi_[2]);
-  for (size_t k = 0; k < list_.count.size(); ++k) {
-    spec.radius.push_back(0.5 * list_.diameter[k]);
-    spec.count.push_back(list_.count[k]);
-  }
+  fabric::PackingSpec spec = fabric::packing_spec(
+      list_, fabric::Vec3(lo_[0], lo_[1], lo_[2]),
+      fabric::Vec3(hi_[0], hi_[1], hi_[2]));
   spec.arrangement = arrangement_;
   spec.seed = static_cast<std::uint64_t>(seed_);
   spec.fill_pores = fill_pores_;

@@ -24,6 +24,18 @@ std::string to_string(Placement p) {
   return names[static_cast<int>(p)];
 }
 
+PackingSpec packing_spec(const ParticleList& list, const Vec3& lo,
+                         const Vec3& hi) {
+  PackingSpec spec;
+  spec.lo = lo;
+  spec.hi = hi;
+  for (size_t k = 0; k < list.count.size(); ++k) {
+    spec.radius.push_back(0.5 * list.diameter[k]);
+    spec.count.push_back(list.count[k]);
+  }
+  return spec;
+}
+
 long long PackingResult::unplaced() const {
   long long n = 0;
   for (long long u : unplaced_per_class) n += u;

@@ -45,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "psd.h"
 #include "trilateration.h"
 
 namespace fabric {
@@ -106,6 +107,11 @@ struct PackingResult {
   long long placed() const { return static_cast<long long>(centre.size()); }
   long long unplaced() const;
 };
+
+// The spec for a particle list in the box [lo, hi]: one size class per
+// interval (radius half its diameter, its rounded count); the rest default.
+PackingSpec packing_spec(const ParticleList& list, const Vec3& lo,
+                         const Vec3& hi);
 
 // Throws std::invalid_argument when the spec is unusable (no spheres,
 // negative counts or radii, a container that cannot hold the largest grain).

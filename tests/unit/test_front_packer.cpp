@@ -36,12 +36,7 @@ Specimen make(const std::string& psd_path, double porosity, double side,
   double L = side * s.intervals.back().d_mean;
   s.volume = L * L * L;
   auto list = particle_list(s.intervals, s.volume, porosity);
-  s.spec.lo = Vec3(0, 0, 0);
-  s.spec.hi = Vec3(L, L, L);
-  for (size_t k = 0; k < s.intervals.size(); ++k) {
-    s.spec.radius.push_back(0.5 * list.diameter[k]);
-    s.spec.count.push_back(list.count[k]);
-  }
+  s.spec = packing_spec(list, Vec3(0, 0, 0), Vec3(L, L, L));
   s.spec.arrangement = a;
   s.spec.seed = seed;
   s.result = pack(s.spec);
@@ -250,18 +245,11 @@ TEST(FrontPacker, DiscreteHasNoSizeTrendAndNoLikeSizeClustering) {
 
 // The paper's start (a first face at the centre) also fills the container.
 TEST(FrontPacker, CentreStartPlacesEveryGrain) {
-  Specimen s;
   auto psd = ParticleSizeDistribution::read(kPsd + "/cu2.5.txt");
   auto iv = psd.equal_mass_intervals(20);
   double L = 5 * iv.back().d_mean;
   auto list = particle_list(iv, L * L * L, 0.36);
-  PackingSpec spec;
-  spec.lo = Vec3(0, 0, 0);
-  spec.hi = Vec3(L, L, L);
-  for (size_t k = 0; k < iv.size(); ++k) {
-    spec.radius.push_back(0.5 * list.diameter[k]);
-    spec.count.push_back(list.count[k]);
-  }
+  PackingSpec spec = packing_spec(list, Vec3(0, 0, 0), Vec3(L, L, L));
   spec.start = Start::centre;
   PackingResult r = pack(spec);
   EXPECT_EQ(r.placement[0], Placement::first_face);
