@@ -218,6 +218,14 @@ def cases(args, work):
         args=fix_args(type="2"))
     add("density -5", ok, [r"density", r"positive"], [-5],
         args=fix_args(density="-5"))
+    add("start top", ok, [r"start", r"'top'", r"floor or centre"],
+        args=fix_args(start="top"))
+    add("layering 0", ok, [r"layering", r"\b0\b", r"positive"],
+        args=fix_args(layering="0"))
+    add("layering nan", ok, [r"layering", r"nan", r"not a number"],
+        args=fix_args(layering="nan"))
+    add("fill_pores maybe", ok, [r"fill_pores", r"'maybe'", r"yes or no"],
+        args=fix_args(fill_pores="maybe"))
 
     # -- atom style
     add("atom_style atomic", ok, [r"granular|sphere|radius"],
