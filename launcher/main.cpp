@@ -1,6 +1,7 @@
 // liggghts-fabric: the `liggghts` executable with this project's styles.
 //
-// LIGGGHTS 3.8 has no plugin loader and Modify keeps its style maps private.
+// LIGGGHTS 3.8 has no plugin loader; Modify and Input keep their style maps
+// private.
 // An explicit template instantiation may name a private member (C++17
 // [temp.explicit]/12), which yields a pointer-to-member through which the
 // launcher adds our creators to the maps after LAMMPS is constructed and
@@ -41,6 +42,8 @@ using FixCreator = Fix *(*)(LAMMPS *, int, char **);
 using ComputeCreator = Compute *(*)(LAMMPS *, int, int, char **);
 using FixMap = std::map<std::string, FixCreator> *Modify::*;
 using ComputeMap = std::map<std::string, ComputeCreator> *Modify::*;
+using CommandCreator = void (*)(LAMMPS *, int, char **);
+using CommandMap = std::map<std::string, CommandCreator> *Input::*;
 
 // The "access a private member" idiom: the friend function defined in the
 // explicitly instantiated template returns the member pointer.
@@ -56,7 +59,12 @@ struct ComputeMapTag {
   using type = ComputeMap;
   friend type member(ComputeMapTag);
 };
+struct CommandMapTag {
+  using type = CommandMap;
+  friend type member(CommandMapTag);
+};
 template struct Expose<FixMapTag, &Modify::fix_map>;
+template struct Expose<CommandMapTag, &Input::command_map>;
 template struct Expose<ComputeMapTag, &Modify::compute_map>;
 
 LAMMPS *the_lammps = nullptr;  // for the abort hook
@@ -82,6 +90,8 @@ void register_styles(LAMMPS *lmp) {
   auto &computes = *(lmp->modify->*member(ComputeMapTag()));
   for (const auto &s : fabric_styles::fixes()) fixes[s.first] = s.second;
   for (const auto &s : fabric_styles::computes()) computes[s.first] = s.second;
+  auto &commands = *(lmp->input->*member(CommandMapTag()));
+  for (const auto &s : fabric_styles::commands()) commands[s.first] = s.second;
 }
 
 }  // namespace
