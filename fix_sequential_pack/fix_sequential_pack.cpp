@@ -67,7 +67,7 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
       verbose_(true),
       start_(fabric::Start::floor),
       layering_(fabric::PackingSpec().layering),
-      summary_{0, 0, 0, 0, 0, 0},
+      summary_{0, 0, 0, 0, 0, 0, 0, 0, 0},
       inserted_(0),
       interval_(nullptr),
       nmax_(0) {
@@ -103,7 +103,7 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
   size_peratom_cols = 0;
   peratom_freq = 1;
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 9;
   global_freq = 1;
   extvector = 0;
   grow_arrays(atom->nmax);
@@ -534,12 +534,26 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
   }
   double achieved = 1.0 - placed_vol / vol;
   long long not_placed = res.unplaced();
+  // Contacts before loading, as the paper counts them: touching grains and
+  // walls (gap below 1e-9 of the smaller radius), no force involved.
+  const std::vector<int> contacts = measure.contact_counts();
+  long long few = 0, total_contacts = 0;
+  double held_vol = 0.0;  // solid volume of the grains with 3 contacts or more
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    few += (contacts[i] < 3), total_contacts += contacts[i];
+    if (contacts[i] >= 3) held_vol += fabric::sphere_volume(2.0 * res.radius[i]);
+  }
+  const double few_pct = contacts.empty() ? 0.0 : 100.0 * few / contacts.size();
+  const double per_grain = contacts.empty() ? 0.0 : double(total_contacts) / contacts.size();
   summary_[0] = res.placed();
   summary_[1] = list_.total();
   summary_[2] = achieved;
   summary_[3] = interior;
   summary_[4] = wall;
   summary_[5] = seconds;
+  summary_[6] = few_pct;
+  summary_[7] = per_grain;
+  summary_[8] = placed_vol > 0 ? 100.0 * held_vol / placed_vol : 0.0;
   if (comm->me != 0) return;
   std::ostringstream s;
   s.unsetf(std::ios::fixed);
@@ -562,7 +576,7 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
              placed_vol > 0 ? 100.0 * placed_mass[k] / placed_vol : 0.0);
     s << row;
   }
-  char b[768];
+  char b[1024];
   double list_porosity = 1.0 - list_.solid_volume() / vol;
   double natural = 1.0 - res.packed_volume / vol;
   snprintf(b, sizeof b,
@@ -573,10 +587,14 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
            "  porosity by volume: target %.4f, list %.4f (counts rounded), "
            "achieved %.4f over the container, %.4f in the interior, %.4f in "
            "the wall layer (%.4g, one coarsest diameter, per wall)\n"
+           "  contacts before loading (grains and walls touching, no force): "
+           "%.3f per grain; %.2f %% of the grains (%.2f %% of the mass) "
+           "have fewer than 3\n"
            "  time: %.3f s (%.0f particles per second)\n",
            list_.total(), res.placed(), res.placed_in_second_loop, not_placed,
            natural, res.vacancies, porosity_, list_porosity, achieved,
-           interior, wall, layer, seconds,
+           interior, wall, layer, per_grain, few_pct,
+           placed_vol > 0 ? 100.0 - summary_[8] : 0.0, seconds,
            seconds > 0 ? res.placed() / seconds : 0.0);
   s << b;
   message(s.str());

@@ -385,6 +385,18 @@ std::vector<std::pair<int, int>> PackingMeasure::touching_pairs(double tol) cons
   return out;
 }
 
+std::vector<int> PackingMeasure::contact_counts(double tol) const {
+  std::vector<int> n(c_.size(), 0);
+  for (const auto& [i, j] : touching_pairs(tol)) ++n[i], ++n[j];
+  for (std::size_t i = 0; i < c_.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const double reach = r_[i] * (1.0 + tol);
+      if (c_[i][a] - box_.lo[a] < reach) ++n[i];
+      if (box_.hi[a] - c_[i][a] < reach) ++n[i];
+    }
+  return n;
+}
+
 double PackingMeasure::size_assortativity(double tol) const {
   std::vector<double> x, y;
   for (const auto& [i, j] : touching_pairs(tol)) {

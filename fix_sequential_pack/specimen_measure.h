@@ -69,6 +69,11 @@ class PackingMeasure {
 
   // Pairs (i < j, sorted) with gap |ci - cj| - ri - rj < tol min(ri, rj).
   std::vector<std::pair<int, int>> touching_pairs(double tol = 1e-9) const;
+  // Contacts of each sphere: its touching pairs (as above) plus the
+  // container's faces within the same gap (centre closer to the face than
+  // r + tol r). The paper counts these before loading ("all particles have
+  // contacts with at least three other particles and/or the container").
+  std::vector<int> contact_counts(double tol = 1e-9) const;
   // Newman's assortativity of ln r over the touching pairs (each pair in
   // both orders); NaN without pairs or without spread.
   double size_assortativity(double tol = 1e-9) const;

@@ -264,7 +264,8 @@ def pack_scene(psd, edge, porosity=0.4, arrangement="discrete", seed=1,
 
 
 PACK_VECTOR = ("placed", "listed", "porosity", "interior_porosity",
-               "wall_layer_porosity", "seconds")
+               "wall_layer_porosity", "seconds", "few_contacts_percent",
+               "contacts_per_grain", "held_mass_percent")
 
 
 def vector_print(fix_id):

@@ -9,8 +9,12 @@ positions, radii and interval indices (f_ID) per ID. The 2-rank runs use
 `processors 2 1 1`, so the cut at x = L/2 goes through the specimen: both
 ranks must own atoms. On one rank the test also checks the specimen itself:
 every placed particle is an atom, the spheres lie in the container and do
-not overlap, and f_ID is the interval index 1..20 (one radius per interval,
-radii growing with the index).
+not overlap, f_ID is the interval index 1..20 (one radius per interval,
+radii growing with the index), and the fix's contacts before loading
+(entries 7-9: % of grains with fewer than 3 contacts, contacts per grain,
+% of the mass with 3 or more) equal an independent count from the dump
+(grains touching within 1e-9 of the smaller radius, walls within 1e-9 of
+the radius).
 
 Specimen: PSD input_scripts/psd/cu2.5.txt (coarsest interval 1.6 mm),
 porosity 0.40, a cube of 3.2 * 1.75 mm: about 4,500 particles.
@@ -37,6 +41,7 @@ def main():
     col = "f_" + FIX
 
     specimens = {}
+    vectors = {}
     for arrangement in ARRANGEMENTS:
         snaps = {}
         for n in RANKS:
@@ -64,6 +69,8 @@ def main():
             # The fix's global vector (what scripts read) says the same as
             # the dump: placed = atoms, porosity = 1 - sphere volume / V.
             vec = su.pack_vector(res.text)
+            if n == 1:
+                vectors[arrangement] = vec
             r = snap.col("radius")
             porosity = 1.0 - (4.0 / 3.0 * np.pi * r ** 3).sum() / EDGE ** 3
             chk.check("%s on %d rank(s): f_%s[1..3] = placed %s, listed %s, "
@@ -97,7 +104,7 @@ def main():
             continue
         ref = snaps[1]
         specimens[arrangement] = ref
-        check_specimen(chk, arrangement, ref, col)
+        check_specimen(chk, arrangement, ref, col, vectors.get(arrangement))
         ref_ids = ref.by_id()
         for n in RANKS[1:]:
             if n not in snaps:
@@ -143,9 +150,40 @@ def compare_per_id(chk, arrangement, n, ref, other, col):
                   detail)
 
 
-def check_specimen(chk, arrangement, snap, col):
+def contact_counts(x, r, edge, block=512):
+    """Contacts per sphere: pairs with gap < 1e-9 of the smaller radius, and
+    the six faces of the cube [0, edge]^3 within 1e-9 of the radius."""
+    n = len(r)
+    counts = np.zeros(n, int)
+    for s in range(0, n, block):
+        e = min(s + block, n)
+        d = np.sqrt(((x[s:e, None, :] - x[None, :, :]) ** 2).sum(-1))
+        gap = d - r[s:e, None] - r[None, :]
+        touch = gap < 1e-9 * np.minimum(r[s:e, None], r[None, :])
+        touch[np.arange(e - s), np.arange(s, e)] = False
+        counts[s:e] += touch.sum(1)
+    reach = r * (1.0 + 1e-9)
+    counts += ((x < reach[:, None]).sum(1) + (edge - x < reach[:, None]).sum(1))
+    return counts
+
+
+def check_specimen(chk, arrangement, snap, col, vec=None):
     x = np.stack([snap.col("x"), snap.col("y"), snap.col("z")], axis=1)
     r = snap.col("radius")
+    if vec is not None:
+        c = contact_counts(x, r, EDGE)
+        m = r ** 3
+        few = 100.0 * (c < 3).mean()
+        held = 100.0 * m[c >= 3].sum() / m.sum()
+        chk.check("%s: contacts before loading, f_%s[7..9] = %.4f %% with fewer than 3, "
+                  "%.4f per grain, %.4f %% of the mass with 3 or more; counted from "
+                  "the dump: %.4f, %.4f, %.4f" % (arrangement, FIX, vec["few_contacts_percent"],
+                                                  vec["contacts_per_grain"], vec["held_mass_percent"],
+                                                  few, c.mean(), held),
+                  abs(vec["few_contacts_percent"] - few) < 1e-6
+                  and abs(vec["contacts_per_grain"] - c.mean()) < 1e-6
+                  and abs(vec["held_mass_percent"] - held) < 1e-6
+                  and 3.0 < c.mean() < 8.0)
     tol = 1e-9 * EDGE
     inside = ((x - r[:, None] >= -tol) & (x + r[:, None] <= EDGE + tol)).all()
     chk.check("%s: all %d spheres lie inside the container"

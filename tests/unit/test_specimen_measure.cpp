@@ -340,6 +340,19 @@ TEST(PackingMeasure, TouchingPairsOfChains) {
   EXPECT_LT(m.worst_overlap(), 1e-14);
 }
 
+TEST(PackingMeasure, ContactCountsWithWalls) {
+  // A row of three unit spheres along x from wall to wall, in a box 6 wide
+  // and 2 deep and high: the end spheres touch one x wall, every sphere the
+  // four y and z faces; a fourth sphere floats apart and touches nothing.
+  const PackingMeasure m({Vec3(1, 1, 1), Vec3(3, 1, 1), Vec3(5, 1, 1), Vec3(3, 1, 1.0 + 1e-3)},
+                         {1.0, 1.0, 1.0, 1e-4}, box(0, 0, 0, 6, 2, 2));
+  // the small sphere lies inside sphere 1: it "touches" it (overlap), and no wall
+  EXPECT_EQ(m.contact_counts(), (std::vector<int>{6, 7, 6, 1}));
+  const PackingMeasure loose({Vec3(1, 1, 1), Vec3(3.01, 1, 1)}, {1.0, 1.0}, box(0, 0, 0, 10, 10, 10));
+  EXPECT_EQ(loose.contact_counts(), (std::vector<int>{3, 2}));  // walls x0 y0 z0; y0 z0
+  EXPECT_EQ(loose.contact_counts(0.02), (std::vector<int>{4, 3}));  // and the 0.01 gap
+}
+
 TEST(PackingMeasure, TouchingPairsMatchBruteForce) {
   Rng rng;
   std::vector<Vec3> c;
