@@ -116,7 +116,8 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
   static const char *keywords[] = {"min_contacts", "force_threshold", "prune",
                                    "intervals", "psd", "walls",
                                    "direction_bins", "walls_in_fabric",
-                                   "max_iterations", "intervals_from"};
+                                   "max_iterations", "intervals_from",
+                                   "oz_tolerance"};
   auto is_keyword = [&](const char *s) {
     for (const char *k : keywords)
       if (strcmp(s, k) == 0) return true;
@@ -185,6 +186,13 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
         fail("walls_in_fabric '" + std::string(v) + "' must be yes or no");
       options_.walls_in_fabric = strcmp(v, "yes") == 0;
       i += 2;
+    } else if (kw == "oz_tolerance") {
+      const char *v = value(i, "a share in [0, 1)");
+      const double t = number(v, kw);
+      if (!(t >= 0.0 && t < 1.0))
+        fail("oz_tolerance " + std::string(v) + " must lie in [0, 1)");
+      options_.oz_tolerance = t;
+      i += 2;
     } else if (kw == "max_iterations") {
       long n = integer(value(i, "an integer >= 1"), kw);
       if (n < 1) fail("max_iterations " + std::string(arg[i + 1]) +
@@ -194,7 +202,7 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
     } else {
       fail("unknown keyword '" + kw + "': allowed are min_contacts "
            "force_threshold prune intervals intervals_from psd walls "
-           "direction_bins walls_in_fabric max_iterations");
+           "direction_bins walls_in_fabric max_iterations oz_tolerance");
     }
   }
   if (!psd_file_.empty()) {
@@ -549,7 +557,7 @@ void ComputePrimaryFabric::analyse() {
     fabric::FabricSums total(nintervals_, options_.direction_bins);
     MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
                   world);
-    summary_ = fabric::finalise(total, representative);
+    summary_ = fabric::finalise(total, representative, options_.oz_tolerance);
 
     for (int i = 0; i < nlocal; ++i) {
       if (index[i] < 0) continue;

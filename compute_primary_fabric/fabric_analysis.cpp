@@ -213,6 +213,31 @@ void validate(const Options& o) {
   if (o.direction_bins < 1)
     fail("direction_bins must be >= 1, got " +
          std::to_string(o.direction_bins));
+  if (!(o.oz_tolerance >= 0.0 && o.oz_tolerance < 1.0))
+    fail("oz_tolerance must lie in [0, 1), got " +
+         std::to_string(o.oz_tolerance));
+}
+
+namespace {
+// sign(a_zz) sqrt(2/3 a:a) of a = (15/2) D, D deviatoric
+double anisotropy_scalar(const Eigen::Matrix3d& D) {
+  const Eigen::Matrix3d a = 7.5 * D;
+  const double size = std::sqrt(2.0 / 3.0 * a.cwiseProduct(a).sum());
+  return a(2, 2) < 0.0 ? -size : size;
+}
+Eigen::Matrix3d deviator(const Eigen::Matrix3d& T) {
+  return T - T.trace() / 3.0 * Eigen::Matrix3d::Identity();
+}
+}  // namespace
+
+double fabric_anisotropy(const Eigen::Matrix3d& F) {
+  if (F.trace() == 0.0) return 0.0;  // no contacts
+  return anisotropy_scalar(deviator(F));
+}
+
+double force_anisotropy(const Eigen::Matrix3d& F, const Eigen::Matrix3d& Phi) {
+  if (F.trace() == 0.0 || Phi.trace() == 0.0) return 0.0;
+  return anisotropy_scalar(deviator(Phi) - deviator(F));
 }
 
 double NormalForceSums::mean() const { return ratio(values[1], values[0]); }
@@ -371,7 +396,10 @@ FabricSums accumulate(const std::vector<Particle>& particles,
 }
 
 FabricSummary finalise(const FabricSums& sums,
-                       const std::vector<double>& interval_diameters) {
+                       const std::vector<double>& interval_diameters,
+                       double oz_tolerance) {
+  if (!(oz_tolerance >= 0.0 && oz_tolerance < 1.0))
+    fail("oz_tolerance must lie in [0, 1), got " + std::to_string(oz_tolerance));
   const int m = sums.intervals();
   if (!interval_diameters.empty()) {
     if (static_cast<int>(interval_diameters.size()) != m)
@@ -412,9 +440,12 @@ FabricSummary finalise(const FabricSums& sums,
     s.fabric_tensor = sums.normal_dyads() / sums[C::fabric_contacts];
   if (sums[C::fabric_normal_force] > 0.0)
     s.force_fabric_tensor = sums.force_dyads() / sums[C::fabric_normal_force];
+  s.fabric_anisotropy = fabric_anisotropy(s.fabric_tensor);
+  s.force_anisotropy = force_anisotropy(s.fabric_tensor, s.force_fabric_tensor);
 
   s.intervals.resize(m);
   OverlappingZone& oz = s.overlapping_zone;
+  OverlappingZone& tz = s.overlapping_zone_tolerant;
   for (int k = 0; k < m; ++k) {
     IntervalSummary& row = s.intervals[k];
     const double n = sums.at(k, I::particles);
@@ -435,12 +466,19 @@ FabricSummary finalise(const FabricSums& sums,
     if (sums.at(k, I::primary_particles) > 0.0 && oz.lower_interval < 0)
       oz.lower_interval = k;
     if (n - sums.at(k, I::primary_particles) > 0.0) oz.upper_interval = k;
+    // the tolerant zone: by mass share, and only above the tolerance (at
+    // t = 0 the same as the counts above: a mass is positive with a grain)
+    if (pm > oz_tolerance * (pm + lm) && pm > 0.0 && tz.lower_interval < 0)
+      tz.lower_interval = k;
+    if (lm > oz_tolerance * (pm + lm) && lm > 0.0) tz.upper_interval = k;
   }
-  if (oz.lower_interval >= 0) oz.r1 = s.intervals[oz.lower_interval].diameter;
-  if (oz.upper_interval >= 0) oz.r2 = s.intervals[oz.upper_interval].diameter;
-  if (oz.lower_interval >= 0 && oz.upper_interval >= oz.lower_interval)
-    for (int k = oz.lower_interval; k <= oz.upper_interval; ++k)
-      oz.mass_percent += s.intervals[k].mass_percent;
+  for (OverlappingZone* z : {&oz, &tz}) {
+    if (z->lower_interval >= 0) z->r1 = s.intervals[z->lower_interval].diameter;
+    if (z->upper_interval >= 0) z->r2 = s.intervals[z->upper_interval].diameter;
+    if (z->lower_interval >= 0 && z->upper_interval >= z->lower_interval)
+      for (int k = z->lower_interval; k <= z->upper_interval; ++k)
+        z->mass_percent += s.intervals[k].mass_percent;
+  }
 
   using D = FabricSums::Direction;
   const int bins = sums.direction_bins();
@@ -472,7 +510,7 @@ Analysis analyse(const std::vector<Particle>& particles,
                               walls, a.threshold_force, options);
   a.sums = accumulate(particles, contacts, walls, a.classification,
                       a.threshold_force, intervals, options);
-  a.summary = finalise(a.sums, interval_diameters);
+  a.summary = finalise(a.sums, interval_diameters, options.oz_tolerance);
   return a;
 }
 

@@ -151,6 +151,9 @@ struct Options {
   int direction_bins = 9;        // polar-angle bins of 90/M degrees
   bool walls_in_fabric = false;  // wall normals are the box axes; they say
                                  // nothing about the soil's own fabric
+  double oz_tolerance = 0.1;     // the tolerant overlapping zone: a class
+                                 // counts in an interval above this share
+                                 // of the interval's mass (0 <= t < 1)
 };
 // Throws std::invalid_argument naming the bad value.
 void validate(const Options& options);
@@ -303,12 +306,30 @@ struct DirectionBin {
 // intervals from r1 to r2. When r1 is coarser than r2 the two fractions do
 // not overlap and the OZ is 0 (a sharp delimitation point). An interval
 // index is -1 and its diameter 0 when there is no such particle.
+//
+// With a tolerance t > 0 an interval counts as holding primary fabric (for
+// r1) only when its primary mass exceeds t of the interval's mass, and as
+// holding loose particles (for r2) only when its loose mass does: with the
+// paper's rule (t = 0) one loose coarse grain makes r2 the coarsest interval
+// and the OZ the whole soil.
 struct OverlappingZone {
   int lower_interval = -1, upper_interval = -1;
   double r1 = 0, r2 = 0;  // representative diameters (compute primary/fabric
                           // reports half of each: radii, as the paper's Table 2)
   double mass_percent = 0;
 };
+
+// Anisotropy of a trace-1 fabric tensor F (the field's usual scalar, e.g.
+// Ouadfel & Rothenburg 2001): a = (15/2) dev(F), the coefficients of the
+// contact-normal density E(n) = (1 + a_ij n_i n_j) / (4 pi); the scalar is
+// sign(a_zz) sqrt(2/3 a_ij a_ij), which is a_zz for a distribution
+// symmetric about z, (1 + a/2 (3 cos^2 theta - 1)) / (4 pi). Positive when
+// the contacts gather along z, the loading axis of the oedometer.
+double fabric_anisotropy(const Eigen::Matrix3d& F);
+// Force anisotropy a_n: the same scalar of (15/2) (dev(Phi) - dev(F)), Phi
+// the force-weighted fabric tensor (trace 1): the directional variation of
+// the mean normal force, f(n) = f0 (1 + a^n_ij n_i n_j), to first order.
+double force_anisotropy(const Eigen::Matrix3d& F, const Eigen::Matrix3d& Phi);
 
 struct FabricSummary {
   double particles = 0;
@@ -323,7 +344,10 @@ struct FabricSummary {
   double loaded_wall_contacts = 0;
   double mean_normal_force = 0;            // over all contacts
   double mean_loaded_normal_force = 0;
-  OverlappingZone overlapping_zone;
+  OverlappingZone overlapping_zone;           // the paper's rule (t = 0)
+  OverlappingZone overlapping_zone_tolerant;  // Options::oz_tolerance
+  double fabric_anisotropy = 0;               // a_c of fabric_tensor
+  double force_anisotropy = 0;                // a_n
   Eigen::Matrix3d fabric_tensor = Eigen::Matrix3d::Zero();        // trace 1
   Eigen::Matrix3d force_fabric_tensor = Eigen::Matrix3d::Zero();  // trace 1
   std::vector<IntervalSummary> intervals;
@@ -333,8 +357,10 @@ struct FabricSummary {
 // interval_diameters: one representative diameter per interval, finest first
 // (non-decreasing, else std::invalid_argument), or empty to use the measured
 // mean diameter of each interval's particles.
+// oz_tolerance: that of Options (the tolerant overlapping zone).
 FabricSummary finalise(const FabricSums& sums,
-                       const std::vector<double>& interval_diameters = {});
+                       const std::vector<double>& interval_diameters = {},
+                       double oz_tolerance = Options().oz_tolerance);
 
 // All steps on one rank's complete data.
 struct Analysis {

@@ -37,6 +37,12 @@ double vector_value(VectorEntry e, const FabricSummary& s,
     case VectorEntry::force_fabric_xy: return P(0, 1);
     case VectorEntry::force_fabric_xz: return P(0, 2);
     case VectorEntry::force_fabric_yz: return P(1, 2);
+    case VectorEntry::fabric_anisotropy: return s.fabric_anisotropy;
+    case VectorEntry::force_anisotropy: return s.force_anisotropy;
+    case VectorEntry::r1_tolerant: return 0.5 * s.overlapping_zone_tolerant.r1;
+    case VectorEntry::r2_tolerant: return 0.5 * s.overlapping_zone_tolerant.r2;
+    case VectorEntry::overlapping_zone_tolerant_percent:
+      return s.overlapping_zone_tolerant.mass_percent;
     case VectorEntry::count: break;
   }
   return 0.0;

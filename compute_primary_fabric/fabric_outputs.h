@@ -14,8 +14,8 @@
 
 #include "fabric_analysis.h"
 
-// Global vector, entries 1..26; then two entries per direction bin k = 1..M:
-// 26 + 2k - 1 the fraction of the loaded contacts in bin k, 26 + 2k their
+// Global vector, entries 1..31; then two entries per direction bin k = 1..M:
+// 31 + 2k - 1 the fraction of the loaded contacts in bin k, 31 + 2k their
 // mean normal force.
 #define FABRIC_VECTOR_ENTRIES(X)                                               \
   X(1, particles, "particles of the group")                                    \
@@ -43,7 +43,12 @@
   X(23, force_fabric_zz, "force-weighted fabric tensor Phi_zz")                \
   X(24, force_fabric_xy, "force-weighted fabric tensor Phi_xy")                \
   X(25, force_fabric_xz, "force-weighted fabric tensor Phi_xz")                \
-  X(26, force_fabric_yz, "force-weighted fabric tensor Phi_yz")
+  X(26, force_fabric_yz, "force-weighted fabric tensor Phi_yz")                \
+  X(27, fabric_anisotropy, "a_c: contact-normal anisotropy of F")              \
+  X(28, force_anisotropy, "a_n: normal-force anisotropy of Phi against F")     \
+  X(29, r1_tolerant, "r1 with oz_tolerance: finest interval above it in primary mass") \
+  X(30, r2_tolerant, "r2 with oz_tolerance: coarsest interval above it in loose mass") \
+  X(31, overlapping_zone_tolerant_percent, "overlapping zone with oz_tolerance, % of the mass")
 
 // Global array: one row per size interval (row 1 the finest), these columns.
 #define FABRIC_ARRAY_COLUMNS(X)                                                \
@@ -83,7 +88,7 @@ inline int vector_size(int direction_bins) {
   return kVectorFixedEntries + 2 * direction_bins;
 }
 
-// The global vector: the 26 entries, then (fraction, mean normal force) per
+// The global vector: the 31 entries, then (fraction, mean normal force) per
 // direction bin, M = direction_bins entries of summary.directions (missing
 // bins are 0).
 std::vector<double> global_vector(const FabricSummary& summary,

@@ -37,8 +37,8 @@ fabric_global.txt: LIGGGHTS 3.8's fix ave/time, in mode vector, replaces a
 bare c_ID whose compute also has a global array by the array's columns
 (fix_ave_time.cpp), so "fix ave/time ... c_pf mode vector" writes the
 per-interval array again, not the global vector. The tool recognises both:
-a block of one-value rows, or a single row of >= 26 values (scalar mode,
-c_pf[1] ... c_pf[44]), is the global vector; an 8-column block is the array.
+a block of one-value rows, or a single row of >= 31 values (scalar mode,
+c_pf[1] ... c_pf[49]), is the global vector; an 8-column block is the array.
 Without the vector, r1/r2 are found from fabric_intervals.txt by their
 definition (finest interval with primary mass, coarsest with loose mass,
 half its diameter) and the direction histogram is recomputed from the last
@@ -349,7 +349,13 @@ class Run:
                                          float(self.vector[VEC["r2"]]),
                                          float(self.vector[VEC["overlapping_zone_percent"]]))
             self.oz_source = "fabric_global.txt"
+            self.oz_tolerant = None
+            if "overlapping_zone_tolerant_percent" in VEC and \
+                    len(self.vector) > VEC["overlapping_zone_tolerant_percent"]:
+                self.oz_tolerant = tuple(float(self.vector[VEC[k]]) for k in (
+                    "r1_tolerant", "r2_tolerant", "overlapping_zone_tolerant_percent"))
         else:
+            self.oz_tolerant = None
             self.r1, self.r2, self.oz = overlap_from_intervals(self.iv)
             self.oz_source = "fabric_intervals.txt"
 
@@ -478,6 +484,12 @@ def fig_distributions(runs, pngdir, written):
         elif r.r1 > 0 and r.r2 > 0:
             ax.axvline(0.5 * (d1 + d2), color="0.4", lw=1,
                        label="no overlap: 2r2=%.3g < 2r1=%.3g mm" % (d2, d1))
+        if getattr(r, "oz_tolerant", None):
+            t1, t2, toz = r.oz_tolerant
+            if t1 > 0 and t2 > 0 and t2 >= t1:
+                ax.axvspan(2e3 * t1 / 1.01, 2e3 * t2 * 1.01, facecolor="none", edgecolor="0.2",
+                           hatch="//", lw=0.5, label="tolerant zone (oz_tolerance) "
+                           "%.3g..%.3g mm\n(%.1f %% of the mass)" % (2e3 * t1, 2e3 * t2, toz))
         log_diameter_axis(ax)
         ax.set_xlabel("diameter d (mm), log scale")
         if i == 0:

@@ -17,6 +17,8 @@ import math
 import os
 import re
 
+import numpy as np
+
 import scene_util as su
 
 COLUMN = """\
@@ -120,6 +122,21 @@ def rich_expected():
         v["fabric_" + ab] = sum(d[a] * d[b] for _, d in contacts) / len(contacts)
         v["force_fabric_" + ab] = (sum(f * d[a] * d[b] for f, d in contacts)
                                    / sum(f for f, _ in contacts))
+    # anisotropies: a = (15/2) dev(T), scalar sign(a_zz) sqrt(2/3 a:a)
+    F = sum(np.outer(d, d) for _, d in contacts) / len(contacts)
+    P = sum(f * np.outer(d, d) for f, d in contacts) / sum(f for f, _ in contacts)
+
+    def scalar(D):
+        a = 7.5 * D
+        return math.copysign(math.sqrt(2.0 / 3.0 * float(np.sum(a * a))), a[2, 2])
+
+    def dev(T):
+        return T - np.trace(T) / 3.0 * np.eye(3)
+    v["fabric_anisotropy"] = scalar(dev(F))
+    v["force_anisotropy"] = scalar(dev(P) - dev(F))
+    # the tolerant zone (0.1): each class fills its interval here, as the paper's
+    v["r1_tolerant"], v["r2_tolerant"] = v["r1"], v["r2"]
+    v["overlapping_zone_tolerant_percent"] = v["overlapping_zone_percent"]
     bins = [(0.0, 0.0)] * 9
     bins[0] = (2 / 3, 400.0)                        # the column, vertical
     theta = math.degrees(math.acos(n[2]))           # 36.9 degrees: bin 4
@@ -165,11 +182,11 @@ def check_outputs(args, chk):
     """Every global vector entry and array element of RICH, through thermo
     output at full precision, by the names of fabric_outputs.h."""
     vec, cols = layout(args.source)
-    chk.check("fabric_outputs.h: 26 vector entries and 8 array columns, "
+    chk.check("fabric_outputs.h: 31 vector entries and 8 array columns, "
               "numbered 1..n in order",
-              [p for p, _, _ in vec] == list(range(1, 27))
+              [p for p, _, _ in vec] == list(range(1, 32))
               and [p for p, _, _ in cols] == list(range(1, 9)), (vec, cols))
-    nvec = 26 + 2 * 9
+    nvec = 31 + 2 * 9
     fields = ["c_pf[%d]" % i for i in range(1, nvec + 1)]
     fields += ["c_pf[%d][%d]" % (r, c) for r in range(1, 4) for c in range(1, 9)]
     text = COLUMN.format(preamble=su.preamble(), free=RICH_ATOMS,
@@ -203,15 +220,15 @@ def check_outputs(args, chk):
         if not close(got, want_v[name]):
             wrong.append("c_pf[%d] %s (%s): %r, expected %r"
                          % (pos, name, meaning, got, want_v[name]))
-    chk.check("global vector entries 1-26, by name from fabric_outputs.h",
+    chk.check("global vector entries 1-31, by name from fabric_outputs.h",
               not wrong, "\n".join(wrong))
     wrong = []
     for b, (frac, force) in enumerate(want_bins):
-        for k, want in ((26 + 2 * b, frac), (27 + 2 * b, force)):
+        for k, want in ((31 + 2 * b, frac), (32 + 2 * b, force)):
             if not close(values[k], want):
                 wrong.append("c_pf[%d] (bin %d): %r, expected %r"
                              % (k + 1, b + 1, values[k], want))
-    chk.check("direction bins, entries 27-44 (fraction, mean force per bin)",
+    chk.check("direction bins, entries 32-49 (fraction, mean force per bin)",
               not wrong, "\n".join(wrong))
     wrong = []
     for r, row in enumerate(want_rows):
@@ -324,6 +341,8 @@ def main():
          base.replace("intervals 1", "psd %s intervals 5" % os.path.join(su.DATA_DIR, "psd_ok_small.txt")),
          "fit no size interval"),
         ("intervals 0", base.replace("intervals 1", "intervals 0"), "1..100"),
+        ("oz_tolerance 1", base + " oz_tolerance 1", "oz_tolerance 1 must lie in [0, 1)"),
+        ("oz_tolerance not a number", base + " oz_tolerance tenth", "'tenth' is not a number"),
     ]
     dump = os.path.join(args.work, "bad.dump")
     for what, compute, expect in cases:

@@ -445,7 +445,88 @@ TEST(OverlappingZone, MeasuredDiametersWhenNoneAreGiven) {
   EXPECT_THROW(finalise(a.sums, {0.3, 0.4}), std::invalid_argument);
 }
 
+TEST(OverlappingZone, TheToleranceIgnoresALoneLooseCoarseGrain) {
+  // Interval 4 holds ten primary grains and one loose grain (1/11 of its
+  // mass): the paper's r2 is interval 4 and its OZ runs from interval 1 to
+  // the coarsest; with the default tolerance 0.1 the lone grain is ignored
+  // and r2 is interval 1, where half the mass is loose.
+  std::vector<int> coarse(10, 1);
+  coarse.push_back(0);
+  const Analysis a = specimen_by_class({{0}, {0, 1}, {1}, {1}, coarse});
+  const OverlappingZone& paper = a.summary.overlapping_zone;
+  const OverlappingZone& tolerant = a.summary.overlapping_zone_tolerant;
+  EXPECT_EQ(paper.lower_interval, 1);
+  EXPECT_EQ(paper.upper_interval, 4);
+  // masses 1, 2+2, 3, 4, 11*5: the paper's zone holds 66 of 67
+  EXPECT_DOUBLE_EQ(paper.mass_percent, 100.0 * 66.0 / 67.0);
+  EXPECT_EQ(tolerant.lower_interval, 1);
+  EXPECT_EQ(tolerant.upper_interval, 1);
+  EXPECT_EQ(tolerant.r2, 0.2);
+  EXPECT_DOUBLE_EQ(tolerant.mass_percent, 100.0 * 4.0 / 67.0);
+  // a primary share at or below the tolerance does not set r1 either: one
+  // primary grain among eleven loose ones in interval 0
+  std::vector<int> fine(11, 0);
+  fine.push_back(1);
+  const Analysis b = specimen_by_class({fine, {1}, {1}, {1}, {1}});
+  EXPECT_EQ(b.summary.overlapping_zone.lower_interval, 0);
+  EXPECT_EQ(b.summary.overlapping_zone_tolerant.lower_interval, 1);
+}
+
+TEST(OverlappingZone, ToleranceZeroIsThePapersRule) {
+  for (const auto& classes : std::vector<std::vector<std::vector<int>>>{
+           {{0}, {1, 0}, {0, 1}, {1}, {1}}, {{0}, {0}, {1}, {1}, {1}},
+           {{0}, {0}, {0}, {0}, {0}}, {{1}, {1}, {1}, {1}, {1}},
+           {{0, 1, 1, 1}, {0}, {1, 0}, {1, 1, 1, 0}, {1}}}) {
+    const Analysis a = specimen_by_class(classes);
+    const FabricSummary s = finalise(a.sums, {0.1, 0.2, 0.4, 0.8, 1.6}, 0.0);
+    EXPECT_EQ(s.overlapping_zone_tolerant.lower_interval, s.overlapping_zone.lower_interval);
+    EXPECT_EQ(s.overlapping_zone_tolerant.upper_interval, s.overlapping_zone.upper_interval);
+    EXPECT_EQ(s.overlapping_zone_tolerant.mass_percent, s.overlapping_zone.mass_percent);
+  }
+  EXPECT_THROW(finalise(specimen_by_class({{0}}).sums, {}, 1.0), std::invalid_argument);
+  EXPECT_THROW(finalise(specimen_by_class({{0}}).sums, {}, -0.1), std::invalid_argument);
+}
+
 // ---------------------------------------------------------------- fabric
+
+TEST(Anisotropy, AxisymmetricDensityGivesItsCoefficient) {
+  // E(n) = (1 + a/2 (3 cos^2 - 1)) / (4 pi) has F = diag(1/3 - a/15,
+  // 1/3 - a/15, 1/3 + 2a/15): the scalar is a, for either sign.
+  for (double a : {0.4, -0.3, 1.2}) {
+    const Eigen::Matrix3d F =
+        Eigen::Vector3d(1.0 / 3 - a / 15, 1.0 / 3 - a / 15, 1.0 / 3 + 2 * a / 15).asDiagonal();
+    EXPECT_NEAR(fabric_anisotropy(F), a, 1e-14) << a;
+    // the same variation in the forces over an isotropic fabric is a_n
+    const Eigen::Matrix3d iso = Eigen::Matrix3d::Identity() / 3.0;
+    EXPECT_NEAR(force_anisotropy(iso, F), a, 1e-14) << a;
+    EXPECT_NEAR(force_anisotropy(F, F), 0.0, 1e-14);
+  }
+  // contacts all along z: 5; all in the xy plane: -2.5; no contacts: 0
+  EXPECT_NEAR(fabric_anisotropy(Eigen::Vector3d(0, 0, 1).asDiagonal()), 5.0, 1e-14);
+  EXPECT_NEAR(fabric_anisotropy(Eigen::Vector3d(0.5, 0.5, 0).asDiagonal()), -2.5, 1e-14);
+  EXPECT_EQ(fabric_anisotropy(Eigen::Matrix3d::Zero()), 0.0);
+}
+
+TEST(Anisotropy, SampledContactsMatchTheirDensity) {
+  // Contact normals drawn from E(n) with a = 0.6 by rejection; the fabric's
+  // scalar recovers a within the sampling error (about 0.02 at 40,000).
+  std::mt19937_64 g(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), w(0.0, 1.0);
+  const double a = 0.6;
+  std::vector<Particle> particles{particle(), particle()};
+  std::vector<ParticleContact> contacts;
+  while (contacts.size() < 40000) {
+    Vector3d n(u(g), u(g), u(g));
+    if (n.norm() > 1.0 || n.norm() < 1e-3) continue;
+    n.normalize();
+    const double density = 1.0 + 0.5 * a * (3.0 * n.z() * n.z() - 1.0);
+    if (w(g) * (1.0 + a) > density) continue;
+    contacts.push_back(contact(0, 1, 1.0, n));
+  }
+  const Analysis r = analyse(particles, contacts, {}, 1, kAnyForce);
+  EXPECT_NEAR(r.summary.fabric_anisotropy, a, 0.03);
+  EXPECT_NEAR(r.summary.force_anisotropy, 0.0, 1e-12);  // equal forces
+}
 
 TEST(FabricTensor, SixAxisContactsAreIsotropic) {
   std::vector<ParticleContact> contacts;
@@ -989,14 +1070,17 @@ TEST(Outputs, EveryVectorEntryAndArrayColumnIsWhereTheTableSaysByName) {
   s.loaded_contacts = 11; s.mean_normal_force = 12;
   s.fabric_tensor << 15, 18, 19, 18, 16, 20, 19, 20, 17;
   s.force_fabric_tensor << 21, 24, 25, 24, 22, 26, 25, 26, 23;
+  s.fabric_anisotropy = 27; s.force_anisotropy = 28;
+  s.overlapping_zone_tolerant.r1 = 2 * 29.0; s.overlapping_zone_tolerant.r2 = 2 * 30.0;
+  s.overlapping_zone_tolerant.mass_percent = 31;
   DirectionBin b0, b1;
-  b0.contact_fraction = 27; b0.mean_normal_force = 28;
-  b1.contact_fraction = 29; b1.mean_normal_force = 30;
+  b0.contact_fraction = 32; b0.mean_normal_force = 33;
+  b1.contact_fraction = 34; b1.mean_normal_force = 35;
   s.directions = {b0, b1};
   const std::vector<double> v = global_vector(s, 13, 14, 2);
   ASSERT_EQ(static_cast<int>(v.size()), vector_size(2));
-  ASSERT_EQ(v.size(), 30u);
-  for (int e = 0; e < 30; ++e) EXPECT_EQ(v[e], e + 1.0) << "entry " << e + 1;
+  ASSERT_EQ(v.size(), 35u);
+  for (int e = 0; e < 35; ++e) EXPECT_EQ(v[e], e + 1.0) << "entry " << e + 1;
   EXPECT_EQ(v[static_cast<int>(VectorEntry::threshold_force)], 13.0);
 
   IntervalSummary r;
