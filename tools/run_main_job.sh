@@ -1,8 +1,10 @@
 #!/bin/bash
-# The main job: install what is missing, build, and run the default scene on
-# 2 MPI ranks: fix sequential/pack builds a Cu = 2.5 specimen, a servo lid
-# compresses it without gravity to 100 kPa until the kinetic energy is spent,
-# and compute primary/fabric tells which grains carry the load. Outputs (time
+# The main job: install what is missing, build, and run the oedometer scene on
+# 2 MPI ranks at the quick-look size (side 3.3: 4,188 grains; the scene's
+# default side 5.5 holds 19,402): fix sequential/pack builds a Cu = 2.5
+# specimen, a servo lid compresses it without gravity to 100 kPa until the
+# grains are at rest, and compute primary/fabric tells which grains carry the
+# load. Arguments are passed on to LIGGGHTS (e.g. -var side 5.5). Outputs (time
 # series, per-interval table, VTK dumps for ParaView) go to out/oedometer/,
 # the paper's figures as PNG to out/oedometer/ too.
 set -euo pipefail
@@ -11,7 +13,8 @@ bash tools/install_deps.sh
 bash tools/build.sh
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mkdir -p out
-mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log "$@" \
-  | grep -E "^(TIMESTEP|DAMPING|SERVO|LOADED|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity by volume:|packed full|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ "
+mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log -var side 3.3 "$@" \
+  | grep --line-buffered -E "^(psd_info|BEFORE LOADING|TIMESTEP|DAMPING|SERVO|KE LIMIT|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity by volume:|packed full|^ +Step +Time|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ " \
+  | awk '/^ +Step +Time/ { if (seen[$0]++) next } { print; fflush() }'
 /usr/bin/python3 tools/plot_fabric.py out/oedometer
 echo "ParaView: out/oedometer/grains_*.vtk (colour by c_pf[2]: 1 primary fabric, 0 loose), out/oedometer/contacts_*.vtp"

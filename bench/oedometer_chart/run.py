@@ -1,0 +1,212 @@
+#!/usr/bin/python3
+"""Speed against accuracy of the oedometer scene: one factor at a time.
+
+    /usr/bin/python3 bench/oedometer_chart/run.py [--jobs 2] [--out DIR] [--runs DIR]
+                          [--set numerics|model|all] [--only NAME ...] [--plot-only]
+
+Runs input_scripts/in.oedometer (Cu 2.5, discrete arrangement, porosity 0.35,
+a cube of side 3.3 coarsest diameters unless the variant sets it)
+once per variant of the table VARIANTS below: the default setting, each
+factor moved alone to a cheaper and to a more refined value, and seeds 2 and 3
+of the default for the seed spread. One run per core (--jobs), resumable: a
+variant with a row in DIR/chart.csv is not run again (delete the row to
+redo it). Every run writes its LIGGGHTS output under RUNS/NAME (--runs,
+default out/oedometer_chart).
+
+Each row: the variant, its factor and value, wall time (s), steps, whether
+the run stopped at rest, the lid stress, primary fabric % by mass, loose % by
+number, the OZ % of the mass and grains. The chart (DIR/chart.png) draws, per
+factor, the deviation of the primary % by mass from that factor's most
+refined run against the wall time (a point per run, a line per factor), with
+the seed spread of the default as a band. The model choices (MODEL_VARIANTS:
+rolling resistance eta, sliding friction mu, the rolling model, the
+specimen's porosity) go to DIR/model.png, primary % against the value.
+Default DIR: docs/oedometer_chart (the committed CSV and PNGs).
+"""
+import argparse
+import os
+import sys
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import oedometer_runs  # noqa: E402  (the one runner of the scene)
+from oedometer_runs import read_rows  # noqa: E402
+
+# name, factor, value as printed, -var overrides, ranks, refined
+# ("refined": this factor's reference, the most refined value of the sweep)
+VARIANTS = [
+    ("default",       "default",    "",      {},                      1, False),
+    ("seed2",         "seed",       "2",     {"seed": "2"},           1, False),
+    ("seed3",         "seed",       "3",     {"seed": "3"},           1, False),
+    ("lid_fast",      "lid rate",   "kp 0.8", {"kp": "0.8"},          1, False),
+    ("lid_slow",      "lid rate",   "kp 0.05", {"kp": "0.05"},        1, True),
+    ("mass_1e5",      "mass scaling", "1e5", {"mass_scale": "1e5"},   1, False),
+    ("mass_1e3",      "mass scaling", "1e3", {"mass_scale": "1e3"},   1, True),
+    ("zeta_0.5",      "damping ratio", "0.5", {"zeta": "0.5"},        1, False),
+    ("zeta_0.25",     "damping ratio", "0.25", {"zeta": "0.25"},      1, True),
+    ("dt_0.4",        "time step",  "dtfac 0.4", {"dtfac": "0.4"},    1, False),
+    ("dt_0.1",        "time step",  "dtfac 0.1", {"dtfac": "0.1"},    1, True),
+    ("ke_1e-3",       "KE threshold", "ke_vrms 1e-3", {"ke_vrms": "1e-3"}, 1, False),
+    ("ke_1e-5",       "KE threshold", "ke_vrms 1e-5", {"ke_vrms": "1e-5"}, 1, True),
+    ("steady_4",      "steadiness", "pf_tol 4", {"pf_tol": "4"},      1, False),
+    ("steady_0.25",   "steadiness", "pf_tol 0.25", {"pf_tol": "0.25"}, 1, True),
+    ("thr_1e-2",      "force threshold", "1e-2", {"threshold": "1e-2"}, 1, False),
+    ("thr_1e-4",      "force threshold", "1e-4", {"threshold": "1e-4"}, 1, False),
+    ("thr_1e-5",      "force threshold", "1e-5", {"threshold": "1e-5"}, 1, True),
+    ("prune_iterate", "prune",      "iterate", {"prune": "iterate"},  1, False),
+    ("ranks_2",       "ranks",      "2",     {},                      2, False),
+    ("side_4.4",      "specimen size", "side 4.4", {"side": "4.4"},   1, False),
+    ("side_5.5",      "specimen size", "side 5.5", {"side": "5.5"},   1, True),
+]
+# The model choices (item "model no more than the scene needs"): what each
+# does to the answer, against the default (eta 1, mu 0.4, porosity 0.35,
+# epsd3). Drawn as primary % against the value, a panel per factor.
+MODEL_VARIANTS = [
+    ("eta_0",         "rolling eta", "0",    {"eta": "0"},            1, False),
+    ("eta_0.25",      "rolling eta", "0.25", {"eta": "0.25"},         1, False),
+    ("eta_0.5",       "rolling eta", "0.5",  {"eta": "0.5"},          1, False),
+    ("mu_0.2",        "sliding mu",  "0.2",  {"mu": "0.2"},           1, False),
+    ("mu_0.8",        "sliding mu",  "0.8",  {"mu": "0.8"},           1, False),
+    ("rolling_epsd",  "rolling model", "epsd", {"rolling": "epsd"},   1, False),
+    ("porosity_0.38", "porosity",    "0.38", {"porosity": "0.38"},    1, False),
+    ("porosity_0.42", "porosity",    "0.42", {"porosity": "0.42"},    1, False),
+]
+MODEL_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "rolling model": "epsd3",
+                  "porosity": "0.35"}
+# every variant runs on this base (the quick-look size of the main job, 4,188
+# grains of Cu 2.5); a variant's own settings replace it
+BASE = {"side": "3.3", "dtfac": "0.2"}
+# prune and ranks have no "more refined" value: their reference is the default
+FIELDS = ["name", "factor", "value"] + oedometer_runs.RESULT_FIELDS
+
+
+def run_variant(v, rundir_root):
+    name, factor, value, over, ranks, _ = v
+    row = oedometer_runs.run_scene(os.path.join(rundir_root, name), dict(BASE, **over), ranks)
+    if row:
+        row.update({"name": name, "factor": factor, "value": value})
+    return row
+
+
+def plot(rows, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    by = {r["name"]: r for r in rows}
+    if "default" not in by:
+        sys.stderr.write("no default run yet: nothing to plot\n")
+        return
+    seeds = [float(by[n]["primary_mass_pct"]) for n in ("default", "seed2", "seed3") if n in by]
+    spread = (max(seeds) - min(seeds)) if len(seeds) > 1 else 0.0
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    factors = []
+    for v in VARIANTS:
+        if v[1] not in ("default", "seed") and v[1] not in factors:
+            factors.append(v[1])
+    for fac in factors:
+        members = [v for v in VARIANTS if v[1] == fac and v[0] in by]
+        ref = [v for v in members if v[5]]
+        ref_row = by[ref[0][0]] if ref else by["default"]
+        pts = [by["default"]] + [by[v[0]] for v in members]
+        pts.sort(key=lambda r: float(r["wall_s"]))
+        x = [float(r["wall_s"]) for r in pts]
+        y = [abs(float(r["primary_mass_pct"]) - float(ref_row["primary_mass_pct"])) for r in pts]
+        line, = ax.plot(x, y, "o-", label=fac)
+        for r, xx, yy in zip(pts, x, y):
+            if r["name"] != "default":
+                ax.annotate(r["value"], (xx, yy), fontsize=7, xytext=(3, 3), textcoords="offset points",
+                            color=line.get_color())
+    d = by["default"]
+    ax.plot([float(d["wall_s"])], [0.0], "k*", ms=12, label="default")
+    ax.axhspan(0, spread, color="0.85", zorder=0, label="seed spread (3 seeds): %.1f points" % spread)
+    ax.set_xscale("log")
+    ax.set_xlabel("wall time of the run (s, one core unless 'ranks')")
+    ax.set_ylabel("|primary fabric % by mass - factor's most refined run| (points)")
+    ax.set_title("Oedometer, Cu 2.5 DA, porosity 0.35: error against cost, one factor at a time")
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print(png)
+
+
+def plot_model(rows, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    by = {r["name"]: r for r in rows}
+    if "default" not in by:
+        return
+    seeds = [float(by[n]["primary_mass_pct"]) for n in ("default", "seed2", "seed3") if n in by]
+    factors = list(MODEL_DEFAULTS)
+    fig, axes = plt.subplots(1, len(factors), figsize=(3.2 * len(factors), 3.6), sharey=True)
+    for ax, fac in zip(axes, factors):
+        pts = [(MODEL_DEFAULTS[fac], by["default"])] + [
+            (v[2], by[v[0]]) for v in MODEL_VARIANTS if v[1] == fac and v[0] in by]
+        numeric = all(_isnum(x) for x, _ in pts)
+        if numeric:
+            pts.sort(key=lambda p: float(p[0]))
+        xs = [float(x) for x, _ in pts] if numeric else list(range(len(pts)))
+        ax.plot(xs, [float(r["primary_mass_pct"]) for _, r in pts], "o-", label="primary % by mass")
+        ax.plot(xs, [100.0 - float(r["loose_number_pct"]) for _, r in pts], "s--",
+                label="100 - loose % by number")
+        if not numeric:
+            ax.set_xticks(xs)
+            ax.set_xticklabels([x for x, _ in pts])
+        if seeds:
+            ax.axhspan(min(seeds), max(seeds), color="0.88", zorder=0)
+        ax.set_title(fac)
+        ax.set_xlabel(fac)
+    axes[0].set_ylabel("% (grey: default over 3 seeds)")
+    axes[0].legend(fontsize=7)
+    fig.suptitle("Oedometer, Cu 2.5 DA: the answer against the model choices (one seed each)")
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print(png)
+
+
+def _isnum(x):
+    try:
+        float(x)
+        return True
+    except ValueError:
+        return False
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "oedometer_chart"),
+                    help="where chart.csv and chart.png go")
+    ap.add_argument("--runs", default=os.path.join(ROOT, "out", "oedometer_chart"),
+                    help="where each run's LIGGGHTS output goes")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--only", nargs="*", help="run only these variants")
+    ap.add_argument("--plot-only", action="store_true")
+    ap.add_argument("--set", choices=("numerics", "model", "all"), default="all",
+                    help="the numerical factors (chart.png), the model choices (model.png), or both")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    csv_path = os.path.join(a.out, "chart.csv")
+    rows = read_rows(csv_path)
+    done = {r["name"] for r in rows}
+    table = {"numerics": VARIANTS, "model": VARIANTS[:3] + MODEL_VARIANTS,
+             "all": VARIANTS + MODEL_VARIANTS}[a.set]
+    todo = [v for v in table if v[0] not in done and (not a.only or v[0] in a.only)]
+    if not a.plot_only and todo:
+        print("%d runs to do (%d done), %d at a time" % (len(todo), len(done), a.jobs), flush=True)
+
+        def one(v):
+            row = run_variant(v, a.runs)
+            if row:
+                print("%-14s %-16s %-12s %7s s  primary %6s %%  loose %6s %%  at rest %s" % (
+                    row["name"], row["factor"], row["value"], row["wall_s"], row["primary_mass_pct"],
+                    row["loose_number_pct"], row["at_rest"]), flush=True)
+            return row
+
+        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS,
+                               [v[0] for v in VARIANTS + MODEL_VARIANTS])
+    plot(read_rows(csv_path), os.path.join(a.out, "chart.png"))
+    plot_model(read_rows(csv_path), os.path.join(a.out, "model.png"))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""Scene test: where the oedometer scene cannot work, it stops with an ERROR
+that names the value and what is allowed, and a non-zero exit status (never
+a run that goes on and prints numbers):
+
+1. a time step at or above the critical one (dtfac 1.2): stopped before the
+   first step, naming dt, the critical step and dtfac;
+2. a lid that could cross half the neighbour skin in one step (vmax 100 m/s):
+   stopped before the first step, naming the lid's step and the skin;
+3. a target stress the contacts cannot carry as small overlaps (1e9 Pa at
+   kn 2e7 N/m): stopped before the first step, naming the stress, the
+   estimated overlap and overlap_max;
+4. the same limit met during the run: with overlap_max 2e-4 (the a-priori
+   estimate at 100 kPa is 1.7e-4 of the finest radius, the loaded chains
+   overlap more) the run stops after its first block, naming the overlap;
+5. the `error` command itself: the message with its ${variables}
+   substituted, exit status 1, and a usage message when it has none.
+"""
+import os
+
+import scene_util as su
+
+CASES = [
+    ("time step above the critical one", {"dtfac": 1.2},
+     ["the time step", "is not below the critical step", "dtfac 1.2 must be below 1"]),
+    ("lid too fast for the neighbour skin", {"vmax": 100},
+     ["the lid may move", "more than half the neighbour skin 5e-5 m", "lower vmax or raise skin"]),
+    ("target stress the contacts cannot carry", {"stress": "1e9"},
+     ["the target stress 1e9 Pa", "above overlap_max 0.05", "lower stress or raise kn"]),
+    ("overlap beyond the limit during the run", {"overlap_max": "2e-4"},
+     ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
+]
+
+ERROR_SCRIPT = """\
+variable limit equal 2
+variable x equal 3
+if "${x} > ${limit}" then "error 'x is ${x}, above ${limit}'"
+print "NOT REACHED"
+"""
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    scene = os.path.join(args.source, "input_scripts", "in.oedometer")
+    for name, variables, phrases in CASES:
+        out = os.path.join(args.work, name.replace(" ", "_"))
+        v = {"out": out, "t_max": 0.01, "side": 3.3}
+        v.update(variables)
+        res = su.run_launcher(args, scene, variables=v, log=out + ".log", cwd=args.source, timeout=600)
+        errors = [l for l in res.text.splitlines() if l.startswith("ERROR")]
+        chk.check("%s: exit status %s is not 0" % (name, res.returncode),
+                  res.returncode not in (0, None), res.describe())
+        chk.check("%s: one ERROR (screen and log) naming %s" % (name, phrases),
+                  len(set(errors)) == 1 and all(p in errors[0] for p in phrases), errors or res.describe())
+        chk.check("%s: no result printed" % name, "FABRIC:" not in res.text)
+
+    inp = su.write_file(os.path.join(args.work, "in.error"), ERROR_SCRIPT)
+    res = su.run_launcher(args, inp, timeout=60)
+    chk.check("error: exit status %s" % res.returncode, res.returncode == 1, res.describe())
+    chk.check("error: the message with its variables substituted",
+              "ERROR: x is 3, above 2" in res.text and "NOT REACHED" not in res.text, res.text[-500:])
+    inp = su.write_file(os.path.join(args.work, "in.error_bare"), "error\n")
+    res = su.run_launcher(args, inp, timeout=60)
+    chk.check("error without a message: a usage error",
+              res.returncode == 1 and "give the message to stop with" in res.text, res.text[-500:])
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""Run input_scripts/in.oedometer with settings and read back its result:
+the one runner of the oedometer chart (bench/oedometer_chart/run.py) and the
+study of the paper's models (tools/oedometer_study.py).
+
+run_scene(rundir, variables, ranks) runs a copy of the scene (LIGGGHTS reads
+its script as it goes: a copy keeps the run safe from edits) from the
+repository root with `-var out rundir`, and returns one row: wall time,
+steps, whether the run stopped at rest, the lid stress, primary % by mass,
+loose % by number, the OZ % (the paper's rule and oz_tolerance), the
+anisotropies a_c and a_n, and the grains; None if the run failed (its
+output is in rundir/screen.txt).
+
+run_all(todo, jobs, one, csv_path, fields, order) runs `one(item)` for each
+item, `jobs` at a time, and appends each row to csv_path as it comes
+(resumable: the callers skip the names the CSV already holds).
+"""
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor, as_completed
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+RESULT_FIELDS = ["wall_s", "steps", "at_rest", "lid_stress_Pa", "primary_mass_pct",
+                 "loose_number_pct", "oz_mass_pct", "oz_tolerant_mass_pct",
+                 "fabric_anisotropy", "force_anisotropy", "grains"]
+
+
+def vector_positions():
+    """0-based positions of the compute's global vector entries, by name,
+    from compute_primary_fabric/fabric_outputs.h (the one layout table)."""
+    path = os.path.join(ROOT, "compute_primary_fabric", "fabric_outputs.h")
+    body = open(path).read().split("#define FABRIC_VECTOR_ENTRIES(X)")[1].split("\n\n")[0]
+    return {n: int(p) - 1 for p, n in re.findall(r'X\((\d+), (\w+), "', body)}
+
+
+def read_global(path):
+    """The last global vector in fabric_global.txt (fix ave/time, scalar mode:
+    one row "step v1 v2 ..."), or None."""
+    if not os.path.exists(path):
+        return None
+    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+    return [float(v) for v in rows[-1][1:]] if rows else None
+
+
+def run_scene(rundir, variables, ranks=1):
+    os.makedirs(rundir, exist_ok=True)
+    scene = os.path.join(rundir, "in.oedometer")
+    shutil.copyfile(os.path.join(ROOT, "input_scripts", "in.oedometer"), scene)
+    cmd = [os.path.join(ROOT, "build", "liggghts-fabric"), "-in", scene,
+           "-log", os.path.join(rundir, "log.lammps"), "-var", "out", rundir]
+    for k, val in variables.items():
+        cmd += ["-var", k, str(val)]
+    if ranks > 1:
+        root = ["--allow-run-as-root"] if os.geteuid() == 0 else []
+        cmd = ["mpirun"] + root + ["--oversubscribe", "-np", str(ranks)] + cmd
+    t0 = time.perf_counter()
+    with open(os.path.join(rundir, "screen.txt"), "w") as f:
+        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=ROOT)
+    wall = time.perf_counter() - t0
+    text = open(os.path.join(rundir, "screen.txt"), errors="replace").read()
+    if rc != 0:
+        sys.stderr.write("exit %d: see %s/screen.txt\n" % (rc, rundir))
+        return None
+    stop = re.search(r"^STOP: (at rest|maximum time).*?after (\d+) steps.*?"
+                     r"lid stress ([0-9.eE+-]+) Pa", text, re.M)
+    fab = re.search(r"^FABRIC: loose ([0-9.eE+-]+) % by number, primary fabric "
+                    r"([0-9.eE+-]+) % by mass, OZ .* holding ([0-9.eE+-]+) % of the mass", text, re.M)
+    grains = re.search(r"with (\d+) atoms", text)
+    if not (stop and fab):
+        sys.stderr.write("no STOP/FABRIC line: see %s/screen.txt\n" % rundir)
+        return None
+    row = {"wall_s": "%.1f" % wall, "steps": stop.group(2),
+           "at_rest": "yes" if stop.group(1) == "at rest" else "no",
+           "lid_stress_Pa": "%.0f" % float(stop.group(3)),
+           "primary_mass_pct": "%.2f" % float(fab.group(2)),
+           "loose_number_pct": "%.2f" % float(fab.group(1)),
+           "oz_mass_pct": "%.2f" % float(fab.group(3)),
+           "grains": grains.group(1) if grains else ""}
+    v = read_global(os.path.join(rundir, "fabric_global.txt"))
+    pos = vector_positions()
+    for field, name, fmt in (("oz_tolerant_mass_pct", "overlapping_zone_tolerant_percent", "%.2f"),
+                             ("fabric_anisotropy", "fabric_anisotropy", "%.4f"),
+                             ("force_anisotropy", "force_anisotropy", "%.4f")):
+        row[field] = fmt % v[pos[name]] if v and name in pos and len(v) > pos[name] else ""
+    return row
+
+
+def read_rows(path):
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def run_all(todo, jobs, one, csv_path, fields, order):
+    """one(item) -> row or None; rows go to csv_path as they come, sorted by
+    order (a list of names)."""
+    def write(rows):
+        rows.sort(key=lambda r: order.index(r["name"]) if r["name"] in order else len(order))
+        with open(csv_path, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+            w.writeheader()
+            w.writerows(rows)
+    with ThreadPoolExecutor(max_workers=jobs) as ex:
+        for fut in as_completed([ex.submit(one, item) for item in todo]):
+            row = fut.result()
+            if row:
+                write(read_rows(csv_path) + [row])

@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""The paper's eight models: layer-wise and discrete arrangement x Cu 2.0,
+2.5, 3.0, 3.5 at porosity 0.35 in the zero-gravity oedometer, with seeds.
+
+    /usr/bin/python3 tools/oedometer_study.py [--small | --convergence]
+        [--sides 5.5] [--seeds 1 2 3] [--soils cu2.0 ...] [--rules discrete layerwise]
+        [--jobs 2] [--out out/study]
+
+One run of input_scripts/in.oedometer per (rule, soil, side, seed), one run
+per core (--jobs), each written to OUT/runs/NAME; one CSV row per run in
+OUT/study.csv as it ends (rule, soil, side, seed, then the result fields of
+tools/oedometer_runs.py). Resumable: a run whose name is in the CSV is not
+run again. Progress: one line per finished run, with the count and the
+elapsed time.
+
+  (default)      the full matrix: 2 rules x 4 soils x seeds 1-3, side 5.5
+                 (19,402 grains of Cu 2.5; 179,000 of Cu 3.5: hours per run
+                 on one core, see docs/oedometer.md)
+  --small        a quick look: both rules x Cu 2.0 and 2.5 x seeds 1-2 at
+                 side 3.3 (1,000-4,200 grains, about 10 minutes on 2 cores)
+  --convergence  the size study: Cu 2.5 DA at sides 3.3, 4.4, 5.5 x seeds 1-3
+
+At the end it prints, per (rule, soil, side), the mean and the range over
+the seeds of primary % by mass and loose % by number.
+"""
+import argparse
+import os
+import sys
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import oedometer_runs  # noqa: E402
+
+SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
+RULES = ["discrete", "layerwise"]
+FIELDS = ["name", "rule", "soil", "side", "seed"] + oedometer_runs.RESULT_FIELDS
+
+
+def name_of(rule, soil, side, seed):
+    return "%s_%s_side%s_seed%s" % ("DA" if rule == "discrete" else "LA", soil, side, seed)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--small", action="store_true")
+    ap.add_argument("--convergence", action="store_true")
+    ap.add_argument("--sides", nargs="*")
+    ap.add_argument("--seeds", nargs="*")
+    ap.add_argument("--soils", nargs="*")
+    ap.add_argument("--rules", nargs="*", choices=RULES)
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "study"))
+    a = ap.parse_args()
+    if a.small:
+        rules, soils, sides, seeds = RULES, ["cu2.0", "cu2.5"], ["3.3"], ["1", "2"]
+    elif a.convergence:
+        rules, soils, sides, seeds = ["discrete"], ["cu2.5"], ["3.3", "4.4", "5.5"], ["1", "2", "3"]
+    else:
+        rules, soils, sides, seeds = RULES, SOILS, ["5.5"], ["1", "2", "3"]
+    rules, soils = a.rules or rules, a.soils or soils
+    sides, seeds = a.sides or sides, a.seeds or seeds
+    for s in soils:
+        if not os.path.exists(os.path.join(ROOT, "input_scripts", "psd", s + ".txt")):
+            ap.error("no PSD file input_scripts/psd/%s.txt" % s)
+    os.makedirs(a.out, exist_ok=True)
+    csv_path = os.path.join(a.out, "study.csv")
+    matrix = [(r, s, d, e) for r in rules for s in soils for d in sides for e in seeds]
+    order = [name_of(*m) for m in matrix]
+    done = {row["name"] for row in oedometer_runs.read_rows(csv_path)}
+    todo = [m for m in matrix if name_of(*m) not in done]
+    print("%d runs in the matrix, %d done, %d to run, %d at a time; rows go to %s"
+          % (len(matrix), len(matrix) - len(todo), len(todo), a.jobs, csv_path), flush=True)
+    t0 = time.time()
+    count = [0]
+
+    def one(m):
+        rule, soil, side, seed = m
+        name = name_of(*m)
+        row = oedometer_runs.run_scene(
+            os.path.join(a.out, "runs", name),
+            {"psd": "input_scripts/psd/%s.txt" % soil, "arrangement": rule,
+             "side": side, "seed": seed})
+        count[0] += 1
+        if row is None:
+            print("[%d/%d] %s FAILED (see its screen.txt)" % (count[0], len(todo), name), flush=True)
+            return None
+        row.update({"name": name, "rule": rule, "soil": soil, "side": side, "seed": seed})
+        print("[%d/%d, %.0f s] %-28s %8s grains  primary %6s %% by mass  loose %6s %% by number  "
+              "%s s%s" % (count[0], len(todo), time.time() - t0, name, row["grains"],
+                          row["primary_mass_pct"], row["loose_number_pct"], row["wall_s"],
+                          "" if row["at_rest"] == "yes" else "  (NOT at rest: t_max)"), flush=True)
+        return row
+
+    if todo:
+        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, order)
+    rows = oedometer_runs.read_rows(csv_path)
+    print("\nrule      soil   side  seeds  primary % by mass (mean, range)  loose % by number (mean, range)")
+    for r in rules:
+        for s in soils:
+            for d in sides:
+                got = [x for x in rows if x["rule"] == r and x["soil"] == s and x["side"] == d]
+                if not got:
+                    continue
+                p = [float(x["primary_mass_pct"]) for x in got]
+                lo = [float(x["loose_number_pct"]) for x in got]
+                print("%-9s %-6s %-5s %5d  %6.1f  %5.1f-%5.1f                %6.1f  %5.1f-%5.1f"
+                      % (r, s, d, len(got), sum(p) / len(p), min(p), max(p),
+                         sum(lo) / len(lo), min(lo), max(lo)))
+
+
+if __name__ == "__main__":
+    main()
