@@ -10,10 +10,12 @@ a run that goes on and prints numbers):
 3. a target stress the contacts cannot carry as small overlaps (1e9 Pa at
    kn 2e7 N/m): stopped before the first step, naming the stress, the
    estimated overlap and overlap_max;
-4. the same limit met during the run: with overlap_max 2e-4 (the a-priori
+4. a container too small for the coarsest interval (side 1.8 coarsest
+   diameters: 0.36 grains, rounded to none): stopped before packing;
+5. the same overlap limit met during the run: with overlap_max 2e-4 (the a-priori
    estimate at 100 kPa is 1.7e-4 of the finest radius, the loaded chains
    overlap more) the run stops after its first block, naming the overlap;
-5. the `error` command itself: the message with its ${variables}
+6. the `error` command itself: the message with its ${variables}
    substituted, exit status 1, and a usage message when it has none.
 """
 import os
@@ -27,6 +29,8 @@ CASES = [
      ["the lid may move", "more than half the neighbour skin 5e-5 m", "lower vmax or raise skin"]),
     ("target stress the contacts cannot carry", {"stress": "1e9"},
      ["the target stress 1e9 Pa", "above overlap_max 0.05", "lower stress or raise kn"]),
+    ("a container too small for the coarsest interval", {"side": 1.8},
+     ["side 1.8 holds", "grains of the coarsest interval", "it would be empty; use side 2.00"]),
     ("overlap beyond the limit during the run", {"overlap_max": "2e-4"},
      ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
 ]
