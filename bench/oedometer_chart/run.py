@@ -60,7 +60,8 @@ VARIANTS = [
 ]
 # The model choices (item "model no more than the scene needs"): what each
 # does to the answer, against the default (eta 1, mu 0.4, porosity 0.35,
-# epsd3). Drawn as primary % against the value, a panel per factor.
+# epsd3, tangential dashpot on, walls as rough as the grains). Drawn as
+# primary % against the value, a panel per factor.
 MODEL_VARIANTS = [
     ("eta_0",         "rolling eta", "0",    {"eta": "0"},            1, False),
     ("eta_0.25",      "rolling eta", "0.25", {"eta": "0.25"},         1, False),
@@ -70,9 +71,11 @@ MODEL_VARIANTS = [
     ("rolling_epsd",  "rolling model", "epsd", {"rolling": "epsd"},   1, False),
     ("porosity_0.38", "porosity",    "0.38", {"porosity": "0.38"},    1, False),
     ("porosity_0.42", "porosity",    "0.42", {"porosity": "0.42"},    1, False),
+    ("tdamp_off",     "tangential damping", "off", {"tdamp": "off"},  1, False),
+    ("mu_wall_0",     "wall friction", "0",  {"mu_wall": "0"},        1, False),
 ]
 MODEL_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "rolling model": "epsd3",
-                  "porosity": "0.35"}
+                  "porosity": "0.35", "tangential damping": "on", "wall friction": "0.4"}
 # every variant runs on this base (the quick-look size of the main job, 4,188
 # grains of Cu 2.5); a variant's own settings replace it
 BASE = {"side": "3.3", "dtfac": "0.2"}
