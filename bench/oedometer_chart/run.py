@@ -77,8 +77,9 @@ MODEL_VARIANTS = [
 MODEL_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "rolling model": "epsd3",
                   "porosity": "0.35", "tangential damping": "on", "wall friction": "0.4"}
 # every variant runs on this base (the quick-look size of the main job, 4,188
-# grains of Cu 2.5); a variant's own settings replace it
-BASE = {"side": "3.3", "dtfac": "0.2"}
+# grains of Cu 2.5, and the time step and t_max the chart was measured with);
+# a variant's own settings replace it
+BASE = {"side": "3.3", "dtfac": "0.2", "t_max": "0.1"}
 # prune and ranks have no "more refined" value: their reference is the default
 FIELDS = ["name", "factor", "value"] + oedometer_runs.RESULT_FIELDS
 
