@@ -15,7 +15,11 @@ a run that goes on and prints numbers):
 5. the same overlap limit met during the run: with overlap_max 2e-4 (the a-priori
    estimate at 100 kPa is 1.7e-4 of the finest radius, the loaded chains
    overlap more) the run stops after its first block, naming the overlap;
-6. the `error` command itself: the message with its ${variables}
+6. and where it must not stop: a layer-wise Cu 2.0 specimen at 0.35 whose
+   packing leaves a whole interval unplaced (the packed-full porosity is
+   above the target) is still classified, by the packer's interval index
+   (intervals_from), with the packer's warning and no ERROR;
+7. the `error` command itself: the message with its ${variables}
    substituted, exit status 1, and a usage message when it has none.
 """
 import os
@@ -59,6 +63,15 @@ def main():
         chk.check("%s: one ERROR (screen and log) naming %s" % (name, phrases),
                   len(set(errors)) == 1 and all(p in errors[0] for p in phrases), errors or res.describe())
         chk.check("%s: no result printed" % name, "FABRIC:" not in res.text)
+
+    out = os.path.join(args.work, "empty_interval")
+    res = su.run_launcher(args, scene, variables={
+        "out": out, "t_max": 0.002, "side": 3.3, "arrangement": "layerwise",
+        "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")},
+        log=out + ".log", cwd=args.source, timeout=600)
+    chk.check("an interval left empty by the packer: classified anyway (exit %s, no ERROR, FABRIC line)"
+              % res.returncode, res.returncode == 0 and not res.errors() and "FABRIC:" in res.text
+              and "particles not placed" in res.text, res.describe())
 
     inp = su.write_file(os.path.join(args.work, "in.error"), ERROR_SCRIPT)
     res = su.run_launcher(args, inp, timeout=60)
