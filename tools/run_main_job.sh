@@ -13,7 +13,8 @@ bash tools/install_deps.sh
 bash tools/build.sh
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mkdir -p out
-mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log -var side 3.3 "$@" \
+# the caller's -var come first: LIGGGHTS keeps the first value of a variable
+mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log "$@" -var side 3.3 \
   | grep --line-buffered -E "^(psd_info|BEFORE LOADING|TIMESTEP|DAMPING|SERVO|KE LIMIT|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity by volume:|packed full|^ +Step +Time|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ " \
   | awk '/^ +Step +Time/ { if (seen[$0]++) next } { print; fflush() }'
 /usr/bin/python3 tools/plot_fabric.py out/oedometer
