@@ -4,7 +4,7 @@
 
     /usr/bin/python3 tools/oedometer_study.py [--small | --convergence]
         [--sides 5.5] [--seeds 1 2 3] [--soils cu2.0 ...] [--rules discrete layerwise]
-        [--jobs 2] [--out out/study]
+        [--ranks 1] [--jobs 2] [--out out/study]
 
 One run of input_scripts/in.oedometer per (rule, soil, side, seed), one run
 per core (--jobs), each written to OUT/runs/NAME; one CSV row per run in
@@ -16,9 +16,13 @@ elapsed time.
   (default)      the full matrix: 2 rules x 4 soils x seeds 1-3, side 5.5
                  (19,402 grains of Cu 2.5; 179,000 of Cu 3.5: hours per run
                  on one core, see docs/oedometer.md)
-  --small        a quick look: both rules x Cu 2.0 and 2.5 x seeds 1-2 at
-                 side 3.3 (1,000-4,200 grains, about 10 minutes on 2 cores)
+  --small        a quick look: both rules x Cu 2.0 and 2.5, seed 1, side 3.3
+                 (1,100-4,200 grains, about 3 minutes on 2 cores; the test
+                 tests/scene/test_study_small.py checks its findings)
   --convergence  the size study: Cu 2.5 DA at sides 3.3, 4.4, 5.5 x seeds 1-3
+  --ranks N      run each scene on N MPI ranks (names get a _ranksN suffix):
+                 the rank-count check, e.g. --rules discrete --soils cu2.5
+                 --sides 3.3 --seeds 1 --ranks 4
 
 At the end it prints, per (rule, soil, side), the mean and the range over
 the seeds of primary % by mass and loose % by number.
@@ -34,11 +38,12 @@ import oedometer_runs  # noqa: E402
 
 SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
 RULES = ["discrete", "layerwise"]
-FIELDS = ["name", "rule", "soil", "side", "seed"] + oedometer_runs.RESULT_FIELDS
+FIELDS = ["name", "rule", "soil", "side", "seed", "ranks"] + oedometer_runs.RESULT_FIELDS
 
 
-def name_of(rule, soil, side, seed):
-    return "%s_%s_side%s_seed%s" % ("DA" if rule == "discrete" else "LA", soil, side, seed)
+def name_of(rule, soil, side, seed, ranks=1):
+    return "%s_%s_side%s_seed%s%s" % ("DA" if rule == "discrete" else "LA", soil, side, seed,
+                                      "_ranks%d" % ranks if ranks > 1 else "")
 
 
 def main():
@@ -49,11 +54,12 @@ def main():
     ap.add_argument("--seeds", nargs="*")
     ap.add_argument("--soils", nargs="*")
     ap.add_argument("--rules", nargs="*", choices=RULES)
+    ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "study"))
     a = ap.parse_args()
     if a.small:
-        rules, soils, sides, seeds = RULES, ["cu2.0", "cu2.5"], ["3.3"], ["1", "2"]
+        rules, soils, sides, seeds = RULES, ["cu2.0", "cu2.5"], ["3.3"], ["1"]
     elif a.convergence:
         rules, soils, sides, seeds = ["discrete"], ["cu2.5"], ["3.3", "4.4", "5.5"], ["1", "2", "3"]
     else:
@@ -65,7 +71,9 @@ def main():
             ap.error("no PSD file input_scripts/psd/%s.txt" % s)
     os.makedirs(a.out, exist_ok=True)
     csv_path = os.path.join(a.out, "study.csv")
-    matrix = [(r, s, d, e) for r in rules for s in soils for d in sides for e in seeds]
+    if a.ranks < 1:
+        ap.error("--ranks %d: must be at least 1" % a.ranks)
+    matrix = [(r, s, d, e, a.ranks) for r in rules for s in soils for d in sides for e in seeds]
     order = [name_of(*m) for m in matrix]
     done = {row["name"] for row in oedometer_runs.read_rows(csv_path)}
     todo = [m for m in matrix if name_of(*m) not in done]
@@ -75,17 +83,18 @@ def main():
     count = [0]
 
     def one(m):
-        rule, soil, side, seed = m
+        rule, soil, side, seed, ranks = m
         name = name_of(*m)
         row = oedometer_runs.run_scene(
             os.path.join(a.out, "runs", name),
             {"psd": "input_scripts/psd/%s.txt" % soil, "arrangement": rule,
-             "side": side, "seed": seed})
+             "side": side, "seed": seed}, ranks)
         count[0] += 1
         if row is None:
             print("[%d/%d] %s FAILED (see its screen.txt)" % (count[0], len(todo), name), flush=True)
             return None
-        row.update({"name": name, "rule": rule, "soil": soil, "side": side, "seed": seed})
+        row.update({"name": name, "rule": rule, "soil": soil, "side": side, "seed": seed,
+                    "ranks": str(ranks)})
         print("[%d/%d, %.0f s] %-28s %8s grains  primary %6s %% by mass  loose %6s %% by number  "
               "%s s%s" % (count[0], len(todo), time.time() - t0, name, row["grains"],
                           row["primary_mass_pct"], row["loose_number_pct"], row["wall_s"],
@@ -99,7 +108,8 @@ def main():
     for r in rules:
         for s in soils:
             for d in sides:
-                got = [x for x in rows if x["rule"] == r and x["soil"] == s and x["side"] == d]
+                got = [x for x in rows if x["rule"] == r and x["soil"] == s and x["side"] == d
+                       and x.get("ranks", "1") in ("", "1")]
                 if not got:
                     continue
                 p = [float(x["primary_mass_pct"]) for x in got]

@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""Scene test: the study driver's small matrix (tools/oedometer_study.py
+--small: both arrangements x Cu 2.0 and 2.5, seed 1, side 3.3, 1,100-4,200
+grains, two runs at a time) reproduces the paper's qualitative findings
+that our model reproduces (docs/validation.md lists them, and the ones it
+does not). Each is checked on every run, so a regression in the packer,
+the scene or the compute shows:
+
+1. The driver writes one CSV row per run, and every run ends at rest (the
+   scene's stop rule) with the lid stress within 5 % of 100 kPa.
+2. Before loading, under 20 % of the grains are loose (the paper, Sec.
+   3.1: "initially under 20 %"; the packer's geometric contacts).
+3. Under load most grains carry nothing: at least 70 % loose by number
+   (the paper: "only a few particles transferring the load").
+4. The loose grains are the fine ones: the primary fabric's share of the
+   mass is at least 1.5 times its share of the number of grains.
+5. Fig. 19: the primary % of an interval's own mass grows with size - the
+   coarsest quarter of the non-empty intervals holds on average at least
+   20 points more of its mass in the primary fabric than the finest
+   quarter.
+6. Fines in the primary fabric (the paper: "regardless of the PSD and
+   structural arrangement, particles of the fines fraction have always been
+   included in the primary fabric"): some of the finest quarter's mass is
+   primary.
+7. An overlapping zone exists (Table 2): r1 < r2, and the OZ holds at least
+   half of the mass.
+8. The driver resumes: run again, it finds every run done and runs none.
+
+Not checked because our model does not reproduce them at this size and
+these seeds (docs/validation.md): LA above DA, primary mass falling with Cu.
+"""
+import csv
+import os
+import re
+import subprocess
+
+import numpy as np
+
+import scene_util as su
+
+
+def intervals_last_block(path):
+    """The last block of fabric_intervals.txt: rows (row, diameter, mass%,
+    primary%ofinterval, ...)."""
+    rows, block = [], None
+    for line in open(path):
+        w = line.split()
+        if not w or line.startswith("#"):
+            continue
+        if len(w) == 2:          # "step nrows" opens a block
+            block = []
+            rows.append(block)
+        elif block is not None:
+            block.append([float(x) for x in w])
+    return np.array(rows[-1])
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    driver = os.path.join(args.source, "tools", "oedometer_study.py")
+    cmd = ["/usr/bin/python3", driver, "--small", "--jobs", "2", "--out", args.work]
+    p = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=1800)
+    print(p.stdout[-3000:], p.stderr[-3000:])
+    chk.check("the driver exits 0 (got %d)" % p.returncode,
+                  p.returncode == 0)
+    csv_path = os.path.join(args.work, "study.csv")
+    rows = list(csv.DictReader(open(csv_path))) if os.path.exists(csv_path) else []
+    chk.check("4 CSV rows (both rules x Cu 2.0, 2.5), got %d" % len(rows),
+                  len(rows) == 4)
+    for row in rows:
+        name = row["name"]
+        rundir = os.path.join(args.work, "runs", name)
+        chk.check("%s ends at rest" % name,
+                  row["at_rest"] == "yes")
+        stress = float(row["lid_stress_Pa"])
+        chk.check("%s: lid stress %.0f Pa within 5 %% of 100 kPa"
+                  % (name, stress),
+                  abs(stress - 1e5) <= 5e3)
+        series = np.array([[float(x) for x in l.split()]
+                           for l in open(os.path.join(rundir, "fabric_series.txt"))
+                           if l.strip() and not l.startswith("#")])
+        loose0 = series[0, 4]
+        chk.check("%s: %.1f %% loose before loading (< 20 %%)" % (name, loose0),
+                  series[0, 0] == 0 and loose0 < 20)
+        loose = float(row["loose_number_pct"])
+        primary_mass = float(row["primary_mass_pct"])
+        chk.check("%s: %.1f %% loose by number under load (>= 70 %%)" % (name, loose),
+                  loose >= 70)
+        chk.check("%s: primary %.1f %% by mass >= 1.5 x %.1f %% by number"
+                  % (name, primary_mass, 100 - loose),
+                  primary_mass >= 1.5 * (100 - loose))
+        iv = intervals_last_block(os.path.join(rundir, "fabric_intervals.txt"))
+        iv = iv[iv[:, 8] > 0]                       # non-empty intervals, fine to coarse
+        q = max(1, len(iv) // 4)
+        fine, coarse = iv[:q, 3].mean(), iv[-q:, 3].mean()
+        chk.check("%s: primary %% of own mass, coarsest quarter %.1f vs finest quarter %.1f "
+                  "(>= 20 points more)" % (name, coarse, fine),
+                  coarse >= fine + 20)
+        chk.check("%s: fines in the primary fabric (finest quarter %.2f %% primary)"
+                  % (name, fine),
+                  fine > 0)
+        glob = [l.split() for l in open(os.path.join(rundir, "fabric_global.txt"))
+                if l.strip() and not l.startswith("#")][-1]
+        r1, r2, oz = float(glob[7]), float(glob[8]), float(glob[9])   # entries 7-9
+        chk.check("%s: overlapping zone r1 %.3g < r2 %.3g m holding %.1f %% (>= 50 %%)"
+                  % (name, r1, r2, oz),
+                  r1 < r2 and oz >= 50)
+    p2 = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=300)
+    chk.check("run again, the driver resumes and runs nothing: %s"
+              % p2.stdout.splitlines()[0] if p2.stdout else "(no output)",
+                  p2.returncode == 0 and re.search(r"4 done, 0 to run", p2.stdout) is not None)
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()
