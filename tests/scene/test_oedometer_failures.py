@@ -15,11 +15,18 @@ a run that goes on and prints numbers):
 5. the same overlap limit met during the run: with overlap_max 2e-4 (the a-priori
    estimate at 100 kPa is 1.7e-4 of the finest radius, the loaded chains
    overlap more) the run stops after its first block, naming the overlap;
-6. and where it must not stop: a layer-wise Cu 2.0 specimen at 0.35 whose
+6. grains that leave the container: a copy of the scene (the fault is
+   injected there, the scene itself has no such switch) throws every grain
+   at the lid at 50 m/s after packing, with overlap_max out of the way; most
+   go through it and out of the simulation box, where LIGGGHTS deletes them
+   silently. The run stops after its first block, counting them against
+   the grains at the start of loading (a count of atoms outside the
+   container region alone would find none: they no longer exist);
+7. and where it must not stop: a layer-wise Cu 2.0 specimen at 0.35 whose
    packing leaves a whole interval unplaced (the packed-full porosity is
    above the target) is still classified, by the packer's interval index
    (intervals_from), with the packer's warning and no ERROR;
-7. the `error` command itself: the message with its ${variables}
+8. the `error` command itself: the message with its ${variables}
    substituted, exit status 1, and a usage message when it has none.
 """
 import os
@@ -63,6 +70,24 @@ def main():
         chk.check("%s: one ERROR (screen and log) naming %s" % (name, phrases),
                   len(set(errors)) == 1 and all(p in errors[0] for p in phrases), errors or res.describe())
         chk.check("%s: no result printed" % name, "FABRIC:" not in res.text)
+
+    kicked = os.path.join(args.work, "in.oedometer_kicked")
+    text = open(scene).read()
+    marker = "run ${every} post no\n"
+    chk.check("the scene has the first loading block the fault goes before", marker in text)
+    su.write_file(kicked, text.replace(marker, "velocity all set 0 0 -50\n" + marker, 1))
+    out = os.path.join(args.work, "grains_leave")
+    res = su.run_launcher(args, kicked, variables={
+        "out": out, "t_max": 0.01, "side": 3.3, "overlap_max": "1e9",
+        "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")},
+        log=out + ".log", cwd=args.source, timeout=600)
+    errors = [l for l in res.text.splitlines() if l.startswith("ERROR")]
+    chk.check("grains leaving the container: exit status %s is not 0, one ERROR counting them "
+              "against the grains at the start, no result" % res.returncode,
+              res.returncode not in (0, None) and len(set(errors)) == 1
+              and "grains have left the container (step 2000 of the loading" in errors[0]
+              and "FABRIC:" not in res.text,
+              errors or res.describe())
 
     out = os.path.join(args.work, "empty_interval")
     res = su.run_launcher(args, scene, variables={
