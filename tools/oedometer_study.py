@@ -4,7 +4,7 @@
 
     /usr/bin/python3 tools/oedometer_study.py [--small | --convergence]
         [--sides 5.5] [--seeds 1 2 3] [--soils cu2.0 ...] [--rules discrete layerwise]
-        [--ranks 1] [--jobs 2] [--out out/study]
+        [--ranks 1] [--var NAME=VALUE ...] [--jobs 2] [--out out/study]
 
 One run of input_scripts/in.oedometer per (rule, soil, side, seed), one run
 per core (--jobs), each written to OUT/runs/NAME; one CSV row per run in
@@ -20,6 +20,9 @@ elapsed time.
                  (1,100-4,200 grains, about 3 minutes on 2 cores; the test
                  tests/scene/test_study_small.py checks its findings)
   --convergence  the size study: Cu 2.5 DA at sides 3.3, 4.4, 5.5 x seeds 1-3
+  --var N=V      further -var settings of the scene for every run (e.g.
+                 t_max=0.1); give each such setting its own --out folder,
+                 since the run names do not carry them
   --ranks N      run each scene on N MPI ranks (names get a _ranksN suffix):
                  the rank-count check, e.g. --rules discrete --soils cu2.5
                  --sides 3.3 --seeds 1 --ranks 4
@@ -55,6 +58,7 @@ def main():
     ap.add_argument("--soils", nargs="*")
     ap.add_argument("--rules", nargs="*", choices=RULES)
     ap.add_argument("--ranks", type=int, default=1)
+    ap.add_argument("--var", nargs="*", default=[], metavar="NAME=VALUE")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "study"))
     a = ap.parse_args()
@@ -71,6 +75,12 @@ def main():
             ap.error("no PSD file input_scripts/psd/%s.txt" % s)
     os.makedirs(a.out, exist_ok=True)
     csv_path = os.path.join(a.out, "study.csv")
+    extra = {}
+    for nv in a.var:
+        if "=" not in nv:
+            ap.error("--var %s: give NAME=VALUE" % nv)
+        k, v = nv.split("=", 1)
+        extra[k] = v
     if a.ranks < 1:
         ap.error("--ranks %d: must be at least 1" % a.ranks)
     matrix = [(r, s, d, e, a.ranks) for r in rules for s in soils for d in sides for e in seeds]
@@ -88,7 +98,7 @@ def main():
         row = oedometer_runs.run_scene(
             os.path.join(a.out, "runs", name),
             {"psd": "input_scripts/psd/%s.txt" % soil, "arrangement": rule,
-             "side": side, "seed": seed}, ranks)
+             "side": side, "seed": seed, **extra}, ranks)
         count[0] += 1
         if row is None:
             print("[%d/%d] %s FAILED (see its screen.txt)" % (count[0], len(todo), name), flush=True)

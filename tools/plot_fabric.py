@@ -427,8 +427,11 @@ def fig_series(runs, key, ylabel, title, name, pngdir, written):
 def fig_per_interval(runs, key, ylabel, title, name, pngdir, written, ylim=None):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for i, r in enumerate(runs):
-        d = r.iv["diameter(m)"] * 1e3
-        ax.plot(d, r.iv[key], ms=4, lw=1.4, label=r.label, **style(i))
+        # an interval the packer left empty (a row of zeros, diameter 0) has
+        # no per-particle value: left out, the line joins its neighbours
+        keep = r.iv["particles"] > 0
+        d = r.iv["diameter(m)"][keep] * 1e3
+        ax.plot(d, r.iv[key][keep], ms=4, lw=1.4, label=r.label, **style(i))
     log_diameter_axis(ax)
     ax.set_xlabel("interval diameter d (mm), log scale")
     ax.set_ylabel(ylabel)
@@ -462,10 +465,11 @@ def fig_distributions(runs, pngdir, written):
     fig, axes = plt.subplots(1, n, figsize=(max(7.5, 5.6 * n), 4.6), sharey=True,
                              squeeze=False)
     for i, (r, ax) in enumerate(zip(runs, axes[0])):
-        d = r.iv["diameter(m)"] * 1e3
-        curves = [("PSD", r.iv["mass%"], "k", "-", "o"),
-                  ("PFD (primary fabric)", r.iv["primary%mass"], "tab:blue", "--", "s"),
-                  ("LPD (loose particles)", r.iv["loose%mass"], "tab:red", ":", "^")]
+        keep = r.iv["particles"] > 0        # an empty interval adds no mass
+        d = r.iv["diameter(m)"][keep] * 1e3
+        curves = [("PSD", r.iv["mass%"][keep], "k", "-", "o"),
+                  ("PFD (primary fabric)", r.iv["primary%mass"][keep], "tab:blue", "--", "s"),
+                  ("LPD (loose particles)", r.iv["loose%mass"][keep], "tab:red", ":", "^")]
         for lab, share, c, ls, mk in curves:
             cum, tot = cumulative(share)
             if cum is None:
