@@ -73,9 +73,12 @@ MODEL_VARIANTS = [
     ("porosity_0.42", "porosity",    "0.42", {"porosity": "0.42"},    1, False),
     ("tdamp_off",     "tangential damping", "off", {"tdamp": "off"},  1, False),
     ("mu_wall_0",     "wall friction", "0",  {"mu_wall": "0"},        1, False),
+    ("hertz",         "normal contact", "Hertz", {"hertz": "1", "overlap_max": "0.2"}, 1, False),
+    ("servo_pi",      "servo",       "PI, ki 200/s", {"ki": "200"},   1, False),
 ]
 MODEL_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "rolling model": "epsd3",
-                  "porosity": "0.35", "tangential damping": "on", "wall friction": "0.4"}
+                  "porosity": "0.35", "tangential damping": "on", "wall friction": "0.4",
+                  "normal contact": "Hooke", "servo": "P"}
 # every variant runs on this base (the quick-look size of the main job, 4,188
 # grains of Cu 2.5, and the time step and t_max the chart was measured with);
 # a variant's own settings replace it
