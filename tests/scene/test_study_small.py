@@ -25,6 +25,8 @@ the scene or the compute shows:
 7. An overlapping zone exists (Table 2): r1 < r2, and the OZ holds at least
    half of the mass.
 8. The driver resumes: run again, it finds every run done and runs none.
+9. tools/validation_report.py turns the runs into the validation page's
+   tables (a row per model, Table 2 beside the paper's) and figures.
 
 Not checked because our model does not reproduce them at this size and
 these seeds (docs/validation.md): LA above DA, primary mass falling with Cu.
@@ -111,6 +113,19 @@ def main():
     chk.check("run again, the driver resumes and runs nothing: %s"
               % p2.stdout.splitlines()[0] if p2.stdout else "(no output)",
                   p2.returncode == 0 and re.search(r"4 done, 0 to run", p2.stdout) is not None)
+    report = os.path.join(args.work, "report")
+    p3 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study", args.work, "--side", "3.3", "--out", report],
+                        cwd=args.source, capture_output=True, text=True, timeout=600)
+    tables = open(os.path.join(report, "tables.md")).read() if p3.returncode == 0 else ""
+    pngs = ["summary.png", "DA/fig11_loose_number.png", "LA/fig19_primary_of_interval.png",
+            "DA/fig17_18_distributions.png", "LA/fig15_16_direction_rose.png"]
+    chk.check("validation_report: a table row per model, Table 2 with the paper's values, figures",
+              p3.returncode == 0 and all("| %s Cu %s |" % (r, c) in tables
+                                         for r in ("DA", "LA") for c in ("2.0", "2.5"))
+              and re.search(r"\| DA Cu 2\.5 \| [0-9.() -]+ \| 0\.11 \|", tables) is not None
+              and all(os.path.exists(os.path.join(report, f)) for f in pngs),
+              p3.stdout[-2000:] + p3.stderr[-2000:])
     chk.finish()
 
 

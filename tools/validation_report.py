@@ -1,0 +1,251 @@
+#!/usr/bin/python3
+"""Tables and figures of docs/validation.md from the runs of
+tools/oedometer_study.py, beside the paper's numbers.
+
+    /usr/bin/python3 tools/validation_report.py [--study out/study]
+        [--side 3.3] [--out docs/validation] [--size CSV ...]
+
+Reads STUDY/study.csv (one row per run) and each run's folder
+STUDY/runs/NAME (fabric_global.txt: r1, r2 and their tolerant versions;
+fabric_series.txt, fabric_intervals.txt: the figures). Writes into OUT:
+
+  study.csv          the rows used (rank count 1 at the chosen side), as read
+  tables.md          per model (rule x Cu): seeds, primary % by mass and
+                     loose % by number (mean and range over the seeds), the
+                     OZ as Table 2 gives it (r1, r2 in mm, OZ %), the
+                     tolerant OZ, a_c, a_n, wall time; the paper's Table 2
+                     beside it; and the rank-count rows (--ranks runs)
+  summary.png        primary % by mass, loose % by number and OZ % against
+                     Cu, DA and LA, a bar for the seeds' range, the paper's
+                     Table 2 OZ and its 40-90 % band for the primary mass
+  DA/, LA/           the paper's Figs. 11-19 drawn by tools/plot_fabric.py
+                     from the seed-1 run of each Cu (one line per Cu)
+
+With --size, tables.md also gets the size study: Cu 2.5 DA per side, from
+the given CSVs of tools/oedometer_study.py (e.g. out/study/study.csv and
+the --convergence runs' CSV). Prints the tables. Exit status 2 when the CSV holds no row at the side.
+"""
+import argparse
+import csv
+import os
+import shutil
+import subprocess
+import sys
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import oedometer_runs  # noqa: E402
+
+SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
+RULES = [("layerwise", "LA"), ("discrete", "DA")]
+# Table 2 of the paper: (r1 mm, r2 mm, OZ % of the mass)
+PAPER_TABLE2 = {
+    ("layerwise", "cu2.0"): (0.08, 0.33, 85.0), ("layerwise", "cu2.5"): (0.09, 0.35, 70.0),
+    ("layerwise", "cu3.0"): (0.16, 0.74, 70.0), ("layerwise", "cu3.5"): (0.34, 1.76, 70.0),
+    ("discrete", "cu2.0"): (0.06, 0.20, 75.0), ("discrete", "cu2.5"): (0.11, 0.40, 70.0),
+    ("discrete", "cu3.0"): (0.19, 0.82, 70.0), ("discrete", "cu3.5"): (0.40, 1.60, 65.0),
+}
+
+
+def radii(rundir):
+    """r1, r2, r1_tolerant, r2_tolerant in mm from the run's last global vector."""
+    v = oedometer_runs.read_global(os.path.join(rundir, "fabric_global.txt"))
+    pos = oedometer_runs.vector_positions()
+    names = ("r1", "r2", "r1_tolerant", "r2_tolerant")
+    if not v:
+        return [float("nan")] * 4
+    return [v[pos[n]] * 1e3 if len(v) > pos[n] else float("nan") for n in names]
+
+
+def loose_before_loading(rundir):
+    """Loose % by number at step 0 (the packer's geometric contacts), from
+    the first row of fabric_series.txt; NaN without the file."""
+    path = os.path.join(rundir, "fabric_series.txt")
+    if not os.path.exists(path):
+        return float("nan")
+    for line in open(path):
+        w = line.split()
+        if w and not line.startswith("#"):
+            return float(w[4])
+    return float("nan")
+
+
+def stats(values):
+    values = [v for v in values if v == v]
+    if not values:
+        return None
+    return sum(values) / len(values), min(values), max(values)
+
+
+def fmt(s, digits=1):
+    if s is None:
+        return "-"
+    mean, lo, hi = s
+    if lo == hi:
+        return "%.*f" % (digits, mean)
+    return "%.*f (%.*f-%.*f)" % (digits, mean, digits, lo, digits, hi)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--study", default=os.path.join(ROOT, "out", "study"))
+    ap.add_argument("--side", default="3.3")
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
+    ap.add_argument("--size", nargs="*", default=[], metavar="CSV")
+    a = ap.parse_args()
+    rows = oedometer_runs.read_rows(os.path.join(a.study, "study.csv"))
+    ranks_rows = [r for r in rows if r["side"] == a.side]
+    rows = [r for r in ranks_rows if r.get("ranks", "1") in ("", "1")]
+    if not rows:
+        sys.stderr.write("no run at side %s in %s/study.csv\n" % (a.side, a.study))
+        return 2
+    os.makedirs(a.out, exist_ok=True)
+    fields = list(rows[0].keys()) + ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm",
+                                     "r2_tolerant_mm"]
+    for r in ranks_rows:
+        r1, r2, t1, t2 = radii(os.path.join(a.study, "runs", r["name"]))
+        r["loose_before_pct"] = "%.2f" % loose_before_loading(
+            os.path.join(a.study, "runs", r["name"]))
+        r.update({"r1_mm": "%.4f" % r1, "r2_mm": "%.4f" % r2,
+                  "r1_tolerant_mm": "%.4f" % t1, "r2_tolerant_mm": "%.4f" % t2})
+    with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(sorted(ranks_rows, key=lambda r: r["name"]))
+
+    def col(got, key):
+        return [float(x[key]) for x in got if x.get(key, "") not in ("", None)]
+
+    lines = ["Side %s coarsest diameters, 1 MPI rank; mean (range) over the seeds.\n" % a.side,
+             "| model | grains | seeds (at rest) | loose % before loading | primary % by mass "
+             "| loose % by number | a_c | a_n | wall s |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    table2 = ["", "Table 2 beside ours (r1: finest interval with primary grains, r2: coarsest "
+              "with loose ones, radii in mm; tolerant: oz_tolerance 0.1):\n",
+              "| model | r1 ours | r1 paper | r2 ours | r2 paper | OZ % ours | OZ % paper "
+              "| tolerant OZ % |",
+              "|---|---|---|---|---|---|---|---|"]
+    summary = {}
+    for rule, tag in RULES:
+        for soil in SOILS:
+            got = [x for x in rows if x["rule"] == rule and x["soil"] == soil]
+            if not got:
+                continue
+            p1, p2, poz = PAPER_TABLE2[(rule, soil)]
+            s = {k: stats(col(got, k)) for k in
+                 ("primary_mass_pct", "loose_number_pct", "oz_mass_pct", "oz_tolerant_mass_pct",
+                  "fabric_anisotropy", "force_anisotropy", "wall_s", "grains", "r1_mm", "r2_mm",
+                  "loose_before_pct")}
+            summary[(rule, soil)] = s
+            rest = sum(1 for x in got if x["at_rest"] == "yes")
+            model = "%s Cu %s" % (tag, soil[2:])
+            lines.append("| %s | %s | %d (%d) | %s | %s | %s | %s | %s | %s |"
+                         % (model, fmt(s["grains"], 0), len(got), rest,
+                            fmt(s["loose_before_pct"]),
+                            fmt(s["primary_mass_pct"]), fmt(s["loose_number_pct"]),
+                            fmt(s["fabric_anisotropy"], 2), fmt(s["force_anisotropy"], 2),
+                            fmt(s["wall_s"], 0)))
+            table2.append("| %s | %s | %.2f | %s | %.2f | %s | %.0f | %s |"
+                          % (model, fmt(s["r1_mm"], 3), p1, fmt(s["r2_mm"], 3), p2,
+                             fmt(s["oz_mass_pct"]), poz, fmt(s["oz_tolerant_mass_pct"])))
+    lines += table2
+    multi = [x for x in ranks_rows if x.get("ranks", "1") not in ("", "1")]
+    if multi:
+        lines += ["", "Rank count (the same model and seed on more MPI ranks):\n",
+                  "| run | ranks | primary % by mass | loose % by number | OZ % | wall s |",
+                  "|---|---|---|---|---|---|"]
+        shown = set()
+        for x in sorted(multi, key=lambda r: (r["name"].split("_ranks")[0], int(r["ranks"]))):
+            base = [y for y in rows if y["name"] == x["name"].split("_ranks")[0]
+                    and y["name"] not in shown]
+            shown.update(y["name"] for y in base)
+            for y in base + [x]:
+                lines.append("| %s | %s | %s | %s | %s | %s |"
+                             % (y["name"].split("_ranks")[0], y.get("ranks") or "1",
+                                y["primary_mass_pct"], y["loose_number_pct"], y["oz_mass_pct"],
+                                y["wall_s"]))
+    if a.size:
+        size_rows = {}
+        for path in a.size:
+            for x in oedometer_runs.read_rows(path):
+                if (x["rule"] == "discrete" and x["soil"] == "cu2.5"
+                        and x.get("ranks", "1") in ("", "1")):
+                    size_rows[x["name"]] = x
+        lines += ["", "Size study, Cu 2.5 DA, 1 MPI rank:\n",
+                  "| side (d_N) | grains | seeds (at rest) | primary % by mass per seed | mean | range "
+                  "| loose % by number, mean | wall s per run |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for side in sorted({x["side"] for x in size_rows.values()}, key=float):
+            got = sorted((x for x in size_rows.values() if x["side"] == side),
+                         key=lambda x: int(x["seed"]))
+            p = col(got, "primary_mass_pct")
+            lines.append("| %s | %s | %d (%d) | %s | %.1f | %.1f | %.1f | %s |"
+                         % (side, fmt(stats(col(got, "grains")), 0), len(got),
+                            sum(1 for x in got if x["at_rest"] == "yes"),
+                            ", ".join("%.1f" % v for v in p), sum(p) / len(p), max(p) - min(p),
+                            stats(col(got, "loose_number_pct"))[0],
+                            fmt(stats(col(got, "wall_s")), 0)))
+    text = "\n".join(lines) + "\n"
+    open(os.path.join(a.out, "tables.md"), "w").write(text)
+    print(text)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4))
+    keys = [("primary_mass_pct", "primary fabric, % by mass"),
+            ("loose_number_pct", "loose grains, % by number"),
+            ("oz_mass_pct", "overlapping zone, % of the mass")]
+    for ax, (key, label) in zip(axes, keys):
+        for i, (rule, tag) in enumerate(RULES):
+            cus, mean, err = [], [], [[], []]
+            for soil in SOILS:
+                s = summary.get((rule, soil), {}).get(key)
+                if s:
+                    cu = float(soil[2:]) + (i - 0.5) * 0.04
+                    cus.append(cu)
+                    mean.append(s[0])
+                    err[0].append(s[0] - s[1])
+                    err[1].append(s[2] - s[0])
+            if cus:
+                ax.errorbar(cus, mean, yerr=err, marker="os"[i], capsize=4, label="ours, " + tag)
+            if key == "oz_mass_pct":
+                tol = [(float(s_[2:]), summary[(rule, s_)]["oz_tolerant_mass_pct"][0])
+                       for s_ in SOILS if summary.get((rule, s_), {}).get("oz_tolerant_mass_pct")]
+                if tol:
+                    ax.plot(*zip(*tol), ":", marker="os"[i], mfc="none", color="C%d" % i,
+                            label="ours, %s, oz_tolerance 0.1" % tag)
+                ax.plot([float(s[2:]) for s in SOILS], [PAPER_TABLE2[(rule, s)][2] for s in SOILS],
+                        "x--", color="C%d" % i, label="paper, " + tag)
+        if key == "primary_mass_pct":
+            ax.axhspan(40, 90, color="0.9", zorder=0, label="paper: 40-90 %")
+        ax.set_xlabel("Cu")
+        ax.set_ylabel(label)
+        ax.set_xticks([2.0, 2.5, 3.0, 3.5])
+        ax.set_ylim(0, 100)
+        ax.legend(fontsize=7, loc="lower left")
+    fig.suptitle("The paper's eight models at side %s d_N (bars: range over seeds)" % a.side)
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.out, "summary.png"), dpi=90)
+    print(os.path.join(a.out, "summary.png"))
+
+    for rule, tag in RULES:
+        dirs, labels = [], []
+        for soil in SOILS:
+            got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil
+                          and os.path.isdir(os.path.join(a.study, "runs", x["name"]))),
+                         key=lambda x: int(x["seed"]))
+            if got:
+                dirs.append(os.path.join(a.study, "runs", got[0]["name"]))
+                labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
+        if not dirs:
+            continue
+        png = os.path.join(a.out, tag)
+        shutil.rmtree(png, ignore_errors=True)
+        subprocess.check_call(["/usr/bin/python3", os.path.join(ROOT, "tools", "plot_fabric.py")]
+                              + dirs + ["--labels"] + labels + ["--png-dir", png])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
