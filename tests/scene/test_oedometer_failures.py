@@ -12,21 +12,22 @@ a run that goes on and prints numbers):
    estimated overlap and overlap_max;
 4. a container too small for the coarsest interval (side 1.8 coarsest
    diameters: 0.36 grains, rounded to none): stopped before packing;
-5. the same overlap limit met during the run: with overlap_max 2e-4 (the a-priori
+5. a value of the `hertz` switch other than 0 or 1: stopped before packing;
+6. the same overlap limit met during the run: with overlap_max 2e-4 (the a-priori
    estimate at 100 kPa is 1.7e-4 of the finest radius, the loaded chains
    overlap more) the run stops after its first block, naming the overlap;
-6. grains that leave the container: a copy of the scene (the fault is
+7. grains that leave the container: a copy of the scene (the fault is
    injected there, the scene itself has no such switch) throws every grain
    at the lid at 50 m/s after packing, with overlap_max out of the way; most
    go through it and out of the simulation box, where LIGGGHTS deletes them
    silently. The run stops after its first block, counting them against
    the grains at the start of loading (a count of atoms outside the
    container region alone would find none: they no longer exist);
-7. and where it must not stop: a layer-wise Cu 2.0 specimen at 0.35 whose
+8. and where it must not stop: a layer-wise Cu 2.0 specimen at 0.35 whose
    packing leaves a whole interval unplaced (the packed-full porosity is
    above the target) is still classified, by the packer's interval index
    (intervals_from), with the packer's warning and no ERROR;
-8. the `error` command itself: the message with its ${variables}
+9. the `error` command itself: the message with its ${variables}
    substituted, exit status 1, and a usage message when it has none.
 """
 import os
@@ -44,6 +45,8 @@ CASES = [
      ["side 1.8 holds", "grains of the coarsest interval", "it would be empty; use side 2.00"]),
     ("overlap beyond the limit during the run", {"overlap_max": "2e-4"},
      ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
+    ("a contact law the scene does not have", {"hertz": 2},
+     ["hertz 2: use 0 (linear springs, the default) or 1 (Hertzian)"]),
 ]
 
 ERROR_SCRIPT = """\
