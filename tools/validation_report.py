@@ -3,7 +3,7 @@
 tools/oedometer_study.py, beside the paper's numbers.
 
     /usr/bin/python3 tools/validation_report.py [--study out/study]
-        [--side 3.3] [--out docs/validation] [--size CSV ...]
+        [--side 3.3] [--out docs/validation] [--size CSV ...] [--page docs/validation.md]
 
 Reads STUDY/study.csv (one row per run) and each run's folder
 STUDY/runs/NAME (fabric_global.txt: r1, r2 and their tolerant versions;
@@ -23,7 +23,9 @@ fabric_series.txt, fabric_intervals.txt: the figures). Writes into OUT:
 
 With --size, tables.md also gets the size study: Cu 2.5 DA per side, from
 the given CSVs of tools/oedometer_study.py (e.g. out/study/study.csv and
-the --convergence runs' CSV). Prints the tables. Exit status 2 when the CSV holds no row at the side.
+the --convergence runs' CSV). With --page, the tables also replace the
+blocks between <!-- tables -->, <!-- ranks -->, <!-- size --> and their
+closing markers in that page (docs/validation.md). Prints the tables. Exit status 2 when the CSV holds no row at the side.
 """
 import argparse
 import csv
@@ -86,12 +88,31 @@ def fmt(s, digits=1):
     return "%.*f (%.*f-%.*f)" % (digits, mean, digits, lo, digits, hi)
 
 
+def fill_page(page, text):
+    """Put the tables of tables.md into the marked blocks of the page."""
+    import re
+    head, rest = text.split("\nTable 2 beside ours", 1)
+    table2 = "Table 2 beside ours" + rest.split("\nRank count")[0].split("\nSize study")[0]
+    blocks = {"tables": head.split("\n", 2)[2].strip() + "\n\n" + table2.rstrip()}
+    if "Rank count" in text:
+        blocks["ranks"] = text.split("MPI ranks):\n", 1)[1].split("\nSize study")[0].strip()
+    if "Size study" in text:
+        blocks["size"] = text.split("1 MPI rank:\n", 1)[1].strip()
+    body = open(page).read()
+    for name, table in blocks.items():
+        body = re.sub(r"<!-- %s -->.*?<!-- /%s -->" % (name, name),
+                      lambda m: "<!-- %s -->\n%s\n<!-- /%s -->" % (name, table, name),
+                      body, flags=re.S)
+    open(page, "w").write(body)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--study", default=os.path.join(ROOT, "out", "study"))
     ap.add_argument("--side", default="3.3")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
     ap.add_argument("--size", nargs="*", default=[], metavar="CSV")
+    ap.add_argument("--page", metavar="MD")
     a = ap.parse_args()
     rows = oedometer_runs.read_rows(os.path.join(a.study, "study.csv"))
     ranks_rows = [r for r in rows if r["side"] == a.side]
@@ -187,6 +208,8 @@ def main():
                             fmt(stats(col(got, "wall_s")), 0)))
     text = "\n".join(lines) + "\n"
     open(os.path.join(a.out, "tables.md"), "w").write(text)
+    if a.page:
+        fill_page(a.page, text)
     print(text)
 
     import matplotlib
