@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 
@@ -64,7 +65,13 @@ ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
   if (!pair_)
     error->all(FLERR, "Compute primary/fabric needs a granular pair style "
                       "(pair_style gran ...) defined before it");
-  pair_->do_store_contact_forces();
+  // Contact forces cost on every step they are stored (docs: Cost); with
+  // store_every N only on multiples of N. Two computes asking for
+  // different periods get their greatest common divisor.
+  long every = store_every_;
+  if (pair_->storeContactForces())
+    every = std::gcd(every, static_cast<long>(pair_->storeContactForcesEvery()));
+  pair_->do_store_contact_forces_every(static_cast<int>(every));
 
   peratom_flag = 1;
   size_peratom_cols = 3;
@@ -117,7 +124,7 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
                                    "intervals", "psd", "walls",
                                    "direction_bins", "walls_in_fabric",
                                    "max_iterations", "intervals_from",
-                                   "oz_tolerance"};
+                                   "oz_tolerance", "store_every"};
   auto is_keyword = [&](const char *s) {
     for (const char *k : keywords)
       if (strcmp(s, k) == 0) return true;
@@ -193,6 +200,13 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
         fail("oz_tolerance " + std::string(v) + " must lie in [0, 1)");
       options_.oz_tolerance = t;
       i += 2;
+    } else if (kw == "store_every") {
+      long n = integer(value(i, "an integer >= 1"), kw);
+      if (n < 1 || n > 1000000000)
+        fail("store_every " + std::string(arg[i + 1]) +
+             " must lie in 1..1000000000");
+      store_every_ = n;
+      i += 2;
     } else if (kw == "max_iterations") {
       long n = integer(value(i, "an integer >= 1"), kw);
       if (n < 1) fail("max_iterations " + std::string(arg[i + 1]) +
@@ -202,7 +216,8 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
     } else {
       fail("unknown keyword '" + kw + "': allowed are min_contacts "
            "force_threshold prune intervals intervals_from psd walls "
-           "direction_bins walls_in_fabric max_iterations oz_tolerance");
+           "direction_bins walls_in_fabric max_iterations oz_tolerance "
+           "store_every");
     }
   }
   if (!psd_file_.empty()) {
@@ -231,9 +246,15 @@ void ComputePrimaryFabric::init() {
   if (!atom->map_style)
     error->all(FLERR, "Compute primary/fabric requires 'atom_modify map "
                       "array' (or hash) to find contact partners by ID");
-  if (pair_->storeContactForcesEvery() != 1)
-    error->all(FLERR, "Compute primary/fabric needs the pair style's contact "
-                      "forces on every step");
+  if (store_every_ % pair_->storeContactForcesEvery() != 0) {
+    char m[256];
+    snprintf(m, sizeof m,
+             "Compute primary/fabric: the pair style stores contact forces "
+             "every %d steps (set by another command), which does not divide "
+             "store_every %ld",
+             pair_->storeContactForcesEvery(), store_every_);
+    error->all(FLERR, m);
+  }
   find_walls();
   interval_fix_ = nullptr;
   if (!intervals_from_.empty()) {
@@ -373,6 +394,18 @@ fabric::IntervalAssignment ComputePrimaryFabric::interval_assignment(
 void ComputePrimaryFabric::analyse() {
   if (analysed_step_ == update->ntimestep) return;
   analysed_step_ = update->ntimestep;
+  const int every = pair_->storeContactForcesEvery();
+  if (every > 1 && update->ntimestep % every != 0) {
+    char m[512];
+    snprintf(m, sizeof m,
+             "Compute primary/fabric: evaluated at step " BIGINT_FORMAT
+             ", but the pair style stores contact forces only on multiples "
+             "of %d (store_every): evaluate it on those steps (thermo, dump "
+             "and fix ave/time every %d, runs of multiples of %d) or use "
+             "store_every 1",
+             update->ntimestep, every, every, every);
+    error->all(FLERR, m);
+  }
 
   if (atom->nmax > nmax_) {
     memory->destroy(peratom_);

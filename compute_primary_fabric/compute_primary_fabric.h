@@ -50,6 +50,9 @@ class ComputePrimaryFabric : public Compute {
   class Fix *interval_fix_ = nullptr;
   std::vector<std::string> wall_ids_;  // empty: every granular wall
   bool walls_given_;
+  // The pair style stores contact forces only on steps that are multiples
+  // of this (keyword store_every; 1: every step).
+  long store_every_ = 1;
 
   class PairGran *pair_;
   std::vector<class FixContactPropertyAtom *> wall_contacts_;

@@ -302,6 +302,21 @@ def main():
                       itr.get(4, (0, 9))[1] == 0 and itr.get(5, (0, 9))[1] == 0
                       and all(itr[i][1] == 1 for i in (1, 2, 3)), itr)
 
+    # store_every: the pair style stores contact forces on multiples of N
+    # only; evaluated on such a step (step 0) the answer is the same.
+    sev = run_column(args, chk, "column_store_every",
+                     "compute pf all primary/fabric min_contacts 2 intervals 1 store_every 10")
+    if sev is not None:
+        chk.check("store_every 10, evaluated at step 0: same contacts and classes",
+                  sev == want, sev)
+    # ... and on another step it stops with an error instead of reading an
+    # empty contact list (the dump asks for it at step 1).
+    expect_error(args, chk, "store_every 10 evaluated at step 1", COLUMN.format(
+        preamble=su.preamble(), free=FREE, dump=os.path.join(args.work, "sev.dump"),
+        compute="compute pf all primary/fabric min_contacts 2 intervals 1 store_every 10")
+        .replace("run 0", "run 3"), "evaluated at step 1, but the pair style stores "
+        "contact forces only on multiples of 10")
+
     check_outputs(args, chk)
     check_docs_quote_layout(args, chk)
 
@@ -343,6 +358,8 @@ def main():
         ("intervals 0", base.replace("intervals 1", "intervals 0"), "1..100"),
         ("oz_tolerance 1", base + " oz_tolerance 1", "oz_tolerance 1 must lie in [0, 1)"),
         ("oz_tolerance not a number", base + " oz_tolerance tenth", "'tenth' is not a number"),
+        ("store_every 0", base + " store_every 0", "store_every 0 must lie in 1..1000000000"),
+        ("store_every not an integer", base + " store_every 2.5", "'2.5' is not an integer"),
     ]
     dump = os.path.join(args.work, "bad.dump")
     for what, compute, expect in cases:
