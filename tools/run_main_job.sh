@@ -1,7 +1,7 @@
 #!/bin/bash
 # The main job: install what is missing, build, and run the oedometer scene on
 # 2 MPI ranks at the scene's default size (side 5.5: 19,402 grains; three
-# seeds there span 1.3 points of primary fabric): fix sequential/pack builds a Cu = 2.5
+# seeds there span 1.8 points of primary fabric): fix sequential/pack builds a Cu = 2.5
 # specimen, a servo lid compresses it without gravity to 100 kPa until the
 # grains are at rest, and compute primary/fabric tells which grains carry the
 # load. Arguments are passed on to LIGGGHTS (e.g. -var side 3.3 for a quick
