@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   auto unit = particle_list(intervals, 1.0, porosity);
   double per_volume = 0.0;
   for (double t : unit.target_count) per_volume += t;
-  std::printf("# %s (Cu %.2f), porosity %.2f, 20 intervals, seed 1, start floor\n",
+  std::printf("# %s (Cu %.2f), porosity %.2f, 20 intervals, seed 1, default start (DA auto, LA floor)\n",
               path.c_str(), psd.uniformity_coefficient(), porosity);
   std::printf("%-10s %9s %9s %8s %9s %9s %12s %11s %10s %9s %9s\n", "rule",
               "N", "placed", "unplaced", "seconds", "cpu_s", "particles/s",
@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
       auto list = particle_list(intervals, V, porosity);
       PackingSpec spec = packing_spec(list, Vec3(0, 0, 0), Vec3(L, L, L));
       spec.arrangement = a;
+      spec.start = default_start(a);  // as fix sequential/pack does
       spec.seed = 1;
       std::clock_t c0 = std::clock();
       auto t0 = std::chrono::steady_clock::now();

@@ -147,6 +147,7 @@ void FixSequentialPack::parse(int narg, char **arg) {
     return false;
   };
   bool have_arrangement = false;
+  bool start_given = false;
   long seed = 0;
   for (int i = 3; i < narg; i += 2) {
     const char *kw = arg[i];
@@ -206,14 +207,19 @@ void FixSequentialPack::parse(int narg, char **arg) {
         fail("layering " + std::string(arg[i + 1]) +
              " must be positive (width of the size preference in ln radius)");
     } else if (strcmp(kw, "start") == 0) {
-      need_value(i, kw, "floor or centre");
-      if (strcmp(arg[i + 1], "floor") == 0)
+      need_value(i, kw, "auto, floor_ceiling, floor or centre");
+      if (strcmp(arg[i + 1], "auto") == 0)
+        start_ = fabric::Start::automatic;
+      else if (strcmp(arg[i + 1], "floor") == 0)
         start_ = fabric::Start::floor;
+      else if (strcmp(arg[i + 1], "floor_ceiling") == 0)
+        start_ = fabric::Start::floor_ceiling;
       else if (strcmp(arg[i + 1], "centre") == 0)
         start_ = fabric::Start::centre;
       else
         fail("start '" + std::string(arg[i + 1]) +
-             "' is unknown: use floor or centre");
+             "' is unknown: use auto, floor_ceiling, floor or centre");
+      start_given = true;
     } else if (strcmp(kw, "verbose") == 0) {
       need_value(i, kw, "yes or no");
       verbose_ = yesno(arg[i + 1], kw);
@@ -229,6 +235,7 @@ void FixSequentialPack::parse(int narg, char **arg) {
     fail("keyword 'arrangement discrete|layerwise' is required");
   if (region_id_.empty()) fail("keyword 'region ID' is required");
   if (seed == 0) fail("keyword 'seed N' is required");
+  if (!start_given) start_ = fabric::default_start(arrangement_);
   seed_ = static_cast<int>(seed);
 
   // The container.
@@ -564,6 +571,15 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
     << ", Cu = " << psd_->uniformity_coefficient() << "\n"
     << "  container " << region_id_ << ": volume " << vol << ", arrangement "
     << fabric::to_string(arrangement_) << ", start " << fabric::to_string(start_)
+    << (start_ == fabric::Start::automatic
+            ? " (" + fabric::to_string(res.start) +
+                  (res.unplaced_with_two_fronts > 0
+                       ? ": two fronts left " +
+                             std::to_string(res.unplaced_with_two_fronts) +
+                             " grains unplaced, one front less volume"
+                       : std::string()) +
+                  ")"
+            : std::string())
     << ", seed " << seed_ << ", " << n << " equal-mass intervals\n"
     << "  interval   d_mean       target    count   placed  not_placed  "
        "mass%PSD  mass%placed\n";

@@ -14,7 +14,19 @@ std::string to_string(Arrangement a) {
   return a == Arrangement::discrete ? "discrete" : "layerwise";
 }
 
-std::string to_string(Start s) { return s == Start::floor ? "floor" : "centre"; }
+std::string to_string(Start s) {
+  switch (s) {
+    case Start::floor: return "floor";
+    case Start::centre: return "centre";
+    case Start::floor_ceiling: return "floor_ceiling";
+    case Start::automatic: return "auto";
+  }
+  return "?";
+}
+
+Start default_start(Arrangement a) {
+  return a == Arrangement::discrete ? Start::automatic : Start::floor;
+}
 
 std::string to_string(Placement p) {
   static const char* names[kPlacementKinds] = {
@@ -244,8 +256,14 @@ bool Packer::inside(const Vec3& c, double r) const {
 }
 
 double Packer::key_of(const Vec3& c) const {
-  return spec_.start == Start::floor ? c[2] - spec_.lo[2]
-                                     : (c - centre_).norm();
+  switch (spec_.start) {
+    case Start::floor: return c[2] - spec_.lo[2];
+    case Start::floor_ceiling:
+      return std::min(c[2] - spec_.lo[2], spec_.hi[2] - c[2]);
+    case Start::centre:
+    case Start::automatic: break;  // pack() resolves automatic
+  }
+  return (c - centre_).norm();
 }
 
 // Distance between a sphere's surface and a wall.
@@ -883,9 +901,31 @@ PackingResult Packer::run() {
 
 }  // namespace
 
+namespace {
+double unplaced_volume(const PackingResult& r, const PackingSpec& spec) {
+  double v = 0.0;
+  for (std::size_t k = 0; k < r.unplaced_per_class.size(); ++k)
+    v += r.unplaced_per_class[k] * sphere_volume(2.0 * spec.radius[k]);
+  return v;
+}
+PackingResult pack_from(const PackingSpec& spec) {
+  PackingResult r = Packer(spec).run();
+  r.start = spec.start;
+  return r;
+}
+}  // namespace
+
 PackingResult pack(const PackingSpec& spec) {
-  Packer packer(spec);
-  return packer.run();
+  if (spec.start != Start::automatic) return pack_from(spec);
+  PackingSpec s = spec;
+  s.start = Start::floor_ceiling;
+  PackingResult two = pack_from(s);
+  if (two.unplaced() == 0) return two;
+  s.start = Start::floor;
+  PackingResult one = pack_from(s);
+  if (!(unplaced_volume(one, s) < unplaced_volume(two, s))) return two;
+  one.unplaced_with_two_fronts = two.unplaced();
+  return one;
 }
 
 }  // namespace fabric

@@ -12,11 +12,12 @@
 //   three walls              a corner (the first grains of a floor start)
 // Every placed sphere opens sites with the pairs of spheres (and walls) that
 // lie within a small gap of it, on both sides of each triple; sites are taken
-// lowest first (start floor: a flat front rising from the floor, the densest
-// and most uniform order) or nearest the container centre first (start
-// centre: the paper's growth from a first face at the centre). Taking the
-// nearest site first is Bennett's (1972) rule, which packs densely and
-// without a gradient, so no pocket is left empty behind the front.
+// nearest the floor or the ceiling first (start floor_ceiling: two flat
+// fronts meeting at mid-height), lowest first (start floor: one front rising
+// from the floor) or nearest the container centre first (start centre: the
+// paper's growth from a first face at the centre). Taking the nearest site
+// first is Bennett's (1972) rule, which packs densely and without a
+// gradient, so no pocket is left empty behind the front.
 //
 // A site that cannot take the grain offered (it would overlap a sphere or
 // cross a wall) is not closed: it is kept for the sizes smaller than that
@@ -54,8 +55,24 @@ enum class Arrangement { discrete, layerwise };
 std::string to_string(Arrangement a);
 
 // Where the packing starts and which site is taken first.
-enum class Start { floor, centre };
+//   floor          one flat front rising from the floor (the ceiling is met
+//                  last: its last gap, thinner than a coarse grain, fills
+//                  with fines)
+//   floor_ceiling  two flat fronts, up from the floor and down from the
+//                  ceiling, meeting at mid-height: both end walls are
+//                  packed like the side walls (DA's default)
+//   centre         the paper's growth from a first face at the centre
+//   automatic      floor_ceiling; if that leaves grains of the list
+//                  unplaced, floor as well, and the one that leaves less
+//                  solid volume unplaced (ties: floor_ceiling). Two fronts
+//                  meeting can leave no room for the last coarse grains of
+//                  a gap-graded soil, where one front places them.
+enum class Start { floor, centre, floor_ceiling, automatic };
 std::string to_string(Start s);
+// The default start of a rule, from the measured specimens
+// (docs/fix_sequential_pack.md): DA automatic, LA floor (LA's first layer on
+// a wall is fine and loose, and two fronts make two of them).
+Start default_start(Arrangement a);
 
 // How a sphere came to its place.
 enum class Placement : uint8_t {
@@ -76,7 +93,7 @@ struct PackingSpec {
   std::vector<double> radius;       // per size class
   std::vector<long long> count;     // spheres to place per size class
   Arrangement arrangement = Arrangement::discrete;
-  Start start = Start::floor;
+  Start start = Start::floor;  // packing_spec() leaves it; see default_start()
   std::uint64_t seed = 1;
   // The second loop: missing grains go into vacancies.
   bool fill_pores = true;
@@ -104,6 +121,10 @@ struct PackingResult {
   long long sites = 0;       // sites opened in all
   long long attempts = 0;    // grains offered to a site
   std::size_t peak_bytes = 0;  // the packer's own data at its largest
+  Start start = Start::floor;  // the start packed with (never automatic)
+  // Start::automatic: grains two fronts left unplaced when one front was
+  // taken instead (else 0).
+  long long unplaced_with_two_fronts = 0;
   long long placed() const { return static_cast<long long>(centre.size()); }
   long long unplaced() const;
 };

@@ -315,8 +315,9 @@ void PackingMeasure::for_each_pair(const Bins& b, F&& f) const {
 }
 
 RegionPorosity PackingMeasure::measure(const Box& region) const {
-  RegionPorosity out{kNaN, 0.0, region.volume()};
+  RegionPorosity out{kNaN, 0.0, region.volume(), kNaN};
   if (!(out.region_volume > 0.0)) return out;
+  double diameter_volume = 0.0;
   const auto k0 = bins_.cell(region.lo), k1 = bins_.cell(region.hi);
   for (long z = k0[2]; z <= k1[2]; ++z)
     for (long y = k0[1]; y <= k1[1]; ++y)
@@ -328,10 +329,13 @@ RegionPorosity PackingMeasure::measure(const Box& region) const {
           const Vec3 hi = region.hi.array().min(c_[i].array() + r_[i]).matrix();
           if ((lo.array() > hi.array()).any()) continue;
           if (bins_.index(bins_.cell(lo)) != cell) continue;
-          out.solid_volume += sphere_box_volume(c_[i], r_[i], region);
+          const double v = sphere_box_volume(c_[i], r_[i], region);
+          out.solid_volume += v;
+          diameter_volume += 2.0 * r_[i] * v;
         }
       }
   out.porosity = 1.0 - out.solid_volume / out.region_volume;
+  if (out.solid_volume > 0.0) out.mean_diameter = diameter_volume / out.solid_volume;
   return out;
 }
 

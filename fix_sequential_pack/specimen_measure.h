@@ -45,6 +45,9 @@ struct RegionPorosity {
   double porosity;
   double solid_volume;   // of the spheres, inside the region
   double region_volume;
+  // Mass-weighted mean diameter of the solid in the region: each sphere's
+  // diameter weighted by its volume inside (NaN if the region holds none).
+  double mean_diameter;
 };
 
 class PackingMeasure {

@@ -218,7 +218,7 @@ def cases(args, work):
         args=fix_args(type="2"))
     add("density -5", ok, [r"density", r"positive"], [-5],
         args=fix_args(density="-5"))
-    add("start top", ok, [r"start", r"'top'", r"floor or centre"],
+    add("start top", ok, [r"start", r"'top'", r"auto, floor_ceiling, floor or centre"],
         args=fix_args(start="top"))
     add("layering 0", ok, [r"layering", r"\b0\b", r"positive"],
         args=fix_args(layering="0"))
