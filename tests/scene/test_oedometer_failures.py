@@ -13,6 +13,9 @@ a run that goes on and prints numbers):
 4. a container too small for the coarsest interval (side 1.8 coarsest
    diameters: 0.36 grains, rounded to none): stopped before packing;
 5. a value of the `hertz` switch other than 0 or 1: stopped before packing;
+   and contact dashpots too strong for the time step (zeta 2: G_n dt 0.62,
+   measured to throw grains out of the container): stopped before the first
+   step, naming G_n, dt and zeta;
 6. the same overlap limit met during the run: with overlap_max 2e-4 (the a-priori
    estimate at 100 kPa is 1.7e-4 of the finest radius, the loaded chains
    overlap more) the run stops after its first block, naming the overlap;
@@ -47,6 +50,8 @@ CASES = [
      ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
     ("a contact law the scene does not have", {"hertz": 2},
      ["hertz 2: use 0 (linear springs, the default) or 1 (Hertzian)"]),
+    ("contact dashpots too strong for the time step", {"zeta": 2},
+     ["the contact damping G_n", "at or above 0.5", "lower zeta (2;", "or dtfac (0.4)"]),
 ]
 
 ERROR_SCRIPT = """\
