@@ -2,7 +2,8 @@
 // soil and arrangement. A benchmark, not a test: it prints figures and
 // checks nothing. Run from the repository root:
 //   build/bench/pack_range [psd-file ...] [--side S] [--targets a,b,...]
-//                          [--seed K]
+//                          [--seed K] [--rules discrete,layerwise]
+//                          [--layering W]
 // Defaults: the four shipped soils (input_scripts/psd/cu2.0.txt .. cu3.5.txt),
 // side 6 coarsest-interval diameters, targets 0.33, 0.34, ..., 0.45, seed 1.
 //
@@ -14,6 +15,9 @@
 //      (placed spheres only), min and max of the 27 sub-cube porosities, the
 //      interior porosity (layer one coarsest diameter), Spearman(radius,
 //      distance from the centre), the size assortativity of touching pairs,
+//      the local grading (median over 4 x 4 x 4 sub-cubes of their Cu,
+//      d60/d10 by volume, over the whole specimen's Cu: 1 for a mixture,
+//      below 1 where like sizes lie together),
 //      the full-packing porosity of that run, the time, and whether the
 //      case is complete and uniform:
 //        placed >= 99.5 % of the list, |achieved - target| <= 0.005,
@@ -50,7 +54,7 @@ struct Run {
 };
 
 Run run(const std::vector<SizeInterval>& intervals, double side, double porosity,
-        Arrangement a, std::uint64_t seed) {
+        Arrangement a, std::uint64_t seed, double layering) {
   Run out;
   double L = side * intervals.back().d_mean;
   out.volume = L * L * L;
@@ -59,6 +63,7 @@ Run run(const std::vector<SizeInterval>& intervals, double side, double porosity
   spec.arrangement = a;
   spec.start = default_start(a);  // as fix sequential/pack does
   spec.seed = seed;
+  if (layering > 0) spec.layering = layering;
   out.listed = list.total();
   out.box = Box{spec.lo, spec.hi};
   out.dmax = *std::max_element(list.diameter.begin(), list.diameter.end());
@@ -95,6 +100,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> psds;
   double side = 6.0;
   std::uint64_t seed = 1;
+  double layering = 0.0;  // 0: the packer's default
+  std::vector<Arrangement> rules = {Arrangement::discrete, Arrangement::layerwise};
   std::vector<double> targets;
   for (double t = 0.33; t < 0.4550; t += 0.01) targets.push_back(std::round(t * 100) / 100);
   for (int i = 1; i < argc; ++i) {
@@ -102,18 +109,31 @@ int main(int argc, char** argv) {
     if (a == "--side" && i + 1 < argc) side = std::atof(argv[++i]);
     else if (a == "--targets" && i + 1 < argc) targets = parse_list(argv[++i]);
     else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
-    else if (a.rfind("--", 0) == 0) {
+    else if (a == "--layering" && i + 1 < argc) layering = std::atof(argv[++i]);
+    else if (a == "--rules" && i + 1 < argc) {
+      rules.clear();
+      std::stringstream ss(argv[++i]);
+      std::string r;
+      while (std::getline(ss, r, ','))
+        if (r == "discrete") rules.push_back(Arrangement::discrete);
+        else if (r == "layerwise") rules.push_back(Arrangement::layerwise);
+        else {
+          std::fprintf(stderr, "pack_range: rule %s: use discrete or layerwise\n", r.c_str());
+          return 2;
+        }
+    } else if (a.rfind("--", 0) == 0) {
       std::fprintf(stderr,
                    "usage: pack_range [psd-file ...] [--side S] "
-                   "[--targets a,b,...] [--seed K]\n");
+                   "[--targets a,b,...] [--seed K] [--rules discrete,layerwise] "
+                   "[--layering W]\n");
       return 2;
     } else psds.push_back(a);
   }
   if (psds.empty())
     for (const char* c : {"2.0", "2.5", "3.0", "3.5"})
       psds.push_back(std::string("input_scripts/psd/cu") + c + ".txt");
-  if (!(side > 0) || targets.empty()) {
-    std::fprintf(stderr, "pack_range: side must be > 0 and targets not empty\n");
+  if (!(side > 0) || targets.empty() || rules.empty() || !(layering >= 0)) {
+    std::fprintf(stderr, "pack_range: side must be > 0, targets and rules not empty, layering >= 0\n");
     return 2;
   }
 
@@ -122,9 +142,10 @@ int main(int argc, char** argv) {
               "|achieved - target| <= 0.005, 27 sub-cubes within 0.03, interior "
               "(layer 1 coarsest diameter) within 0.01\n",
               side, static_cast<unsigned long long>(seed));
-  std::printf("%-6s %-9s %6s %8s %8s %8s %7s %7s %8s %8s %7s %7s %7s %7s %s\n",
+  if (layering > 0) std::printf("# layering %g\n", layering);
+  std::printf("%-6s %-9s %6s %8s %8s %8s %7s %7s %8s %8s %7s %7s %7s %7s %7s %s\n",
               "soil", "rule", "target", "listed", "placed%", "achieved",
-              "sub_min", "sub_max", "interior", "spearman", "assort", "full",
+              "sub_min", "sub_max", "interior", "spearman", "assort", "loc_cu", "full",
               "seconds", "c&u", "fails");
   std::fflush(stdout);
 
@@ -132,21 +153,21 @@ int main(int argc, char** argv) {
   for (const std::string& path : psds) {
     auto psd = ParticleSizeDistribution::read(path);
     auto intervals = psd.equal_mass_intervals(20);
-    for (Arrangement a : {Arrangement::discrete, Arrangement::layerwise}) {
+    for (Arrangement a : rules) {
       Summary sm;
       sm.soil = base_name(path);
       sm.rule = to_string(a);
       {
-        Run f = run(intervals, side, 0.25, a, seed);
+        Run f = run(intervals, side, 0.25, a, seed, layering);
         sm.full = 1.0 - f.result.packed_volume / f.volume;
-        std::printf("%-6s %-9s %6s %8lld %8.2f %8s %7s %7s %8s %8s %7s %7.4f %7.1f %7s %s\n",
+        std::printf("%-6s %-9s %6s %8lld %8.2f %8s %7s %7s %8s %8s %7s %7s %7.4f %7.1f %7s %s\n",
                     sm.soil.c_str(), sm.rule.c_str(), "0.25", f.listed,
                     100.0 * f.result.placed() / f.listed, "-", "-", "-", "-",
-                    "-", "-", sm.full, f.seconds, "-", "(packed full)");
+                    "-", "-", "-", sm.full, f.seconds, "-", "(packed full)");
         std::fflush(stdout);
       }
       for (double target : targets) {
-        Run r = run(intervals, side, target, a, seed);
+        Run r = run(intervals, side, target, a, seed, layering);
         const PackingResult& p = r.result;
         double vol = 0.0;
         for (double rr : p.radius) vol += sphere_volume(2.0 * rr);
@@ -159,6 +180,23 @@ int main(int argc, char** argv) {
         double interior = m.interior_porosity(r.dmax);
         double spearman = m.radius_distance_spearman();
         double assort = m.size_assortativity();
+        std::vector<double> lcu;
+        {
+          const int n = 4;
+          Vec3 e = (r.box.hi - r.box.lo) / n;
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+              for (int k = 0; k < n; ++k) {
+                Vec3 lo = r.box.lo + Vec3(i * e[0], j * e[1], k * e[2]);
+                double c = m.local_cu(Box{lo, lo + e});
+                if (std::isfinite(c)) lcu.push_back(c);
+              }
+        }
+        double loc_cu = NAN;
+        if (!lcu.empty()) {
+          std::nth_element(lcu.begin(), lcu.begin() + lcu.size() / 2, lcu.end());
+          loc_cu = lcu[lcu.size() / 2] / m.cu();
+        }
         double full = 1.0 - p.packed_volume / r.volume;
         std::string fails;
         if (!(placed >= 0.995)) fails += "P";
@@ -168,10 +206,10 @@ int main(int argc, char** argv) {
         bool ok = fails.empty();
         sm.tested.push_back(target);
         if (ok) sm.ok.push_back(target);
-        std::printf("%-6s %-9s %6.2f %8lld %8.2f %8.4f %7.4f %7.4f %8.4f %8.3f %7.3f %7.4f %7.1f %7s %s\n",
+        std::printf("%-6s %-9s %6.2f %8lld %8.2f %8.4f %7.4f %7.4f %8.4f %8.3f %7.3f %7.3f %7.4f %7.1f %7s %s\n",
                     sm.soil.c_str(), sm.rule.c_str(), target, r.listed,
                     100.0 * placed, achieved, lo, hi, interior, spearman, assort,
-                    full, r.seconds, ok ? "yes" : "no", fails.c_str());
+                    loc_cu, full, r.seconds, ok ? "yes" : "no", fails.c_str());
         std::fflush(stdout);
       }
       summary.push_back(sm);

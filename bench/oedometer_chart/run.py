@@ -2,7 +2,7 @@
 """Speed against accuracy of the oedometer scene: one factor at a time.
 
     /usr/bin/python3 bench/oedometer_chart/run.py [--jobs 2] [--out DIR] [--runs DIR]
-                          [--set numerics|model|all] [--only NAME ...] [--plot-only]
+                          [--set numerics|model|all|converged|model55] [--only NAME ...] [--plot-only]
 
 Runs input_scripts/in.oedometer (Cu 2.5, discrete arrangement, porosity 0.35,
 a cube of side 3.3 coarsest diameters unless the variant sets it)
@@ -85,19 +85,76 @@ MODEL_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "rolling model": "eps
 # ke_vrms 2e-4, whose knee at the default size docs/oedometer.md shows);
 # a variant's own settings replace it
 BASE = {"side": "3.3", "dtfac": "0.2", "t_max": "0.1", "ki": "0", "ke_vrms": "1e-4"}
+# The chart at the converged setting (--set converged, chart_side5.5.csv and
+# .png): the scene's defaults as they are (side 5.5, PI servo, ke_vrms 2e-4,
+# dtfac 0.4), Cu 2.5 DA, every run on 2 ranks and one run at a time (--jobs
+# 1), so that the wall times compare: each factor once cheaper and once more
+# refined than the default where both exist. Not here: pf_tol 4 (the
+# steadiness rule is not what stops the default run, the energy limit is)
+# and the damping ratio (a model parameter: docs/oedometer.md).
+CONVERGED_BASE = {}
+CONVERGED_VARIANTS = [
+    ("default",       "default",    "",      {},                      2, False),
+    ("seed2",         "seed",       "2",     {"seed": "2"},           2, False),
+    ("seed3",         "seed",       "3",     {"seed": "3"},           2, False),
+    ("lid_fast",      "lid rate",   "kp 0.8", {"kp": "0.8"},          2, False),
+    ("lid_slow",      "lid rate",   "kp 0.05", {"kp": "0.05"},        2, True),
+    ("mass_2e4",      "mass scaling", "2e4", {"mass_scale": "2e4"},   2, False),
+    ("mass_2.5e3",    "mass scaling", "2.5e3", {"mass_scale": "2.5e3"}, 2, True),
+    ("dt_0.2",        "time step",  "dtfac 0.2", {"dtfac": "0.2"},    2, True),
+    ("ke_4e-4",       "KE threshold", "ke_vrms 4e-4", {"ke_vrms": "4e-4"}, 2, False),
+    ("ke_1e-4",       "KE threshold", "ke_vrms 1e-4", {"ke_vrms": "1e-4"}, 2, True),
+    ("steady_0.25",   "steadiness", "pf_tol 0.25", {"pf_tol": "0.25"}, 2, True),
+    ("thr_1e-2",      "force threshold", "1e-2", {"threshold": "1e-2"}, 2, False),
+    ("thr_1e-4",      "force threshold", "1e-4", {"threshold": "1e-4"}, 2, False),
+    ("thr_1e-5",      "force threshold", "1e-5", {"threshold": "1e-5"}, 2, True),
+    ("prune_iterate", "prune",      "iterate", {"prune": "iterate"},  2, False),
+    ("ranks_1",       "ranks",      "1",     {},                      1, False),
+    ("ranks_4",       "ranks",      "4",     {},                      4, False),
+    ("side_3.3",      "specimen size", "side 3.3", {"side": "3.3"},   2, False),
+    ("side_4.4",      "specimen size", "side 4.4", {"side": "4.4"},   2, False),
+    ("side_6.6",      "specimen size", "side 6.6", {"side": "6.6"},   2, True),
+]
+# The model choices at the converged setting (--set model55, model_side5.5.csv
+# and .png): as CONVERGED_VARIANTS, 2 ranks, one run at a time; the default
+# and its seeds are the converged chart's rows. Most needed first: the
+# rolling resistance eta over 0-1, then sliding and wall friction.
+MODEL55_VARIANTS = [
+    ("eta_0.5",       "rolling eta", "0.5",  {"eta": "0.5"},          2, False),
+    ("eta_0",         "rolling eta", "0",    {"eta": "0"},            2, False),
+    ("eta_0.25",      "rolling eta", "0.25", {"eta": "0.25"},         2, False),
+    ("mu_0.2",        "sliding mu",  "0.2",  {"mu": "0.2"},           2, False),
+    ("mu_0.8",        "sliding mu",  "0.8",  {"mu": "0.8"},           2, False),
+    ("mu_wall_0",     "wall friction", "0",  {"mu_wall": "0"},        2, False),
+    ("porosity_0.42", "porosity",    "0.42", {"porosity": "0.42"},    2, False),
+    ("servo_p",       "servo",       "P (ki 0)", {"ki": "0"},         2, False),
+]
+MODEL55_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "wall friction": "0.4",
+                    "porosity": "0.35", "servo": "PI, ki 200/s"}
 # prune and ranks have no "more refined" value: their reference is the default
 FIELDS = ["name", "factor", "value"] + oedometer_runs.RESULT_FIELDS
 
 
-def run_variant(v, rundir_root):
+def run_variant(v, rundir_root, base):
     name, factor, value, over, ranks, _ = v
-    row = oedometer_runs.run_scene(os.path.join(rundir_root, name), dict(BASE, **over), ranks)
+    row = oedometer_runs.run_scene(os.path.join(rundir_root, name), dict(base, **over), ranks)
     if row:
         row.update({"name": name, "factor": factor, "value": value})
     return row
 
 
-def plot(rows, png):
+def _wall(r):
+    return float(r["wall_s"])
+
+
+def _particle_steps(r):
+    return float(r["steps"]) * float(r["grains"])
+
+
+def plot(rows, png, variants=VARIANTS, title=None, xlabel=None, steps_panel=False, symlog=False):
+    """Error against cost, a line per factor; with steps_panel a second panel
+    against particle-steps (steps x grains), the cost that machine noise
+    does not change."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -107,38 +164,46 @@ def plot(rows, png):
         return
     seeds = [float(by[n]["primary_mass_pct"]) for n in ("default", "seed2", "seed3") if n in by]
     spread = (max(seeds) - min(seeds)) if len(seeds) > 1 else 0.0
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    panels = [(_wall, xlabel or "wall time of the run (s, one core unless 'ranks')")]
+    if steps_panel:
+        panels.append((_particle_steps, "particle-steps of the run (steps x grains)"))
+    fig, axes = plt.subplots(1, len(panels), figsize=(8 * len(panels), 5.5), squeeze=False)
     factors = []
-    for v in VARIANTS:
+    for v in variants:
         if v[1] not in ("default", "seed") and v[1] not in factors:
             factors.append(v[1])
-    for fac in factors:
-        members = [v for v in VARIANTS if v[1] == fac and v[0] in by]
-        ref = [v for v in members if v[5]]
-        ref_row = by[ref[0][0]] if ref else by["default"]
-        pts = [by["default"]] + [by[v[0]] for v in members]
-        pts.sort(key=lambda r: float(r["wall_s"]))
-        x = [float(r["wall_s"]) for r in pts]
-        y = [abs(float(r["primary_mass_pct"]) - float(ref_row["primary_mass_pct"])) for r in pts]
-        line, = ax.plot(x, y, "o-", label=fac)
-        for r, xx, yy in zip(pts, x, y):
-            if r["name"] != "default":
-                ax.annotate(r["value"], (xx, yy), fontsize=7, xytext=(3, 3), textcoords="offset points",
-                            color=line.get_color())
-    d = by["default"]
-    ax.plot([float(d["wall_s"])], [0.0], "k*", ms=12, label="default")
-    ax.axhspan(0, spread, color="0.85", zorder=0, label="seed spread (3 seeds): %.1f points" % spread)
-    ax.set_xscale("log")
-    ax.set_xlabel("wall time of the run (s, one core unless 'ranks')")
-    ax.set_ylabel("|primary fabric % by mass - factor's most refined run| (points)")
-    ax.set_title("Oedometer, Cu 2.5 DA, porosity 0.35: error against cost, one factor at a time")
-    ax.legend(fontsize=7, ncol=2)
+    for ax, (cost, label) in zip(axes[0], panels):
+        for fac in factors:
+            members = [v for v in variants if v[1] == fac and v[0] in by]
+            ref = [v for v in members if v[5]]
+            ref_row = by[ref[0][0]] if ref else by["default"]
+            pts = [by["default"]] + [by[v[0]] for v in members]
+            pts.sort(key=cost)
+            x = [cost(r) for r in pts]
+            y = [abs(float(r["primary_mass_pct"]) - float(ref_row["primary_mass_pct"])) for r in pts]
+            line, = ax.plot(x, y, "o-", label=fac)
+            for r, xx, yy in zip(pts, x, y):
+                if r["name"] != "default":
+                    ax.annotate(r["value"], (xx, yy), fontsize=7, xytext=(3, 3),
+                                textcoords="offset points", color=line.get_color())
+        d = by["default"]
+        ax.plot([cost(d)], [0.0], "k*", ms=12, label="default")
+        ax.axhspan(0, spread, color="0.85", zorder=0,
+                   label="seed spread (3 seeds): %.1f points" % spread)
+        ax.set_xscale("log")
+        if symlog:  # prune iterate lies 40 points off: linear up to 1 point, log above
+            ax.set_yscale("symlog", linthresh=1.0)
+            ax.set_ylim(bottom=0.0)
+        ax.set_xlabel(label)
+        ax.set_ylabel("|primary fabric % by mass - factor's most refined run| (points)")
+        ax.legend(fontsize=7, ncol=2)
+    fig.suptitle(title or "Oedometer, Cu 2.5 DA, porosity 0.35: error against cost, one factor at a time")
     fig.tight_layout()
     fig.savefig(png, dpi=120)
     print(png)
 
 
-def plot_model(rows, png):
+def plot_model(rows, png, variants=MODEL_VARIANTS, defaults=MODEL_DEFAULTS, title=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -146,11 +211,15 @@ def plot_model(rows, png):
     if "default" not in by:
         return
     seeds = [float(by[n]["primary_mass_pct"]) for n in ("default", "seed2", "seed3") if n in by]
-    factors = list(MODEL_DEFAULTS)
-    fig, axes = plt.subplots(1, len(factors), figsize=(3.2 * len(factors), 3.6), sharey=True)
+    factors = [f for f in defaults if any(v[1] == f and v[0] in by for v in variants)]
+    if not factors:
+        return
+    fig, axes = plt.subplots(1, len(factors), figsize=(3.2 * len(factors), 3.6), sharey=True,
+                             squeeze=False)
+    axes = axes[0]
     for ax, fac in zip(axes, factors):
-        pts = [(MODEL_DEFAULTS[fac], by["default"])] + [
-            (v[2], by[v[0]]) for v in MODEL_VARIANTS if v[1] == fac and v[0] in by]
+        pts = [(defaults[fac], by["default"])] + [
+            (v[2], by[v[0]]) for v in variants if v[1] == fac and v[0] in by]
         numeric = all(_isnum(x) for x, _ in pts)
         if numeric:
             pts.sort(key=lambda p: float(p[0]))
@@ -167,7 +236,7 @@ def plot_model(rows, png):
         ax.set_xlabel(fac)
     axes[0].set_ylabel("% (grey: default over 3 seeds)")
     axes[0].legend(fontsize=7)
-    fig.suptitle("Oedometer, Cu 2.5 DA: the answer against the model choices (one seed each)")
+    fig.suptitle(title or "Oedometer, Cu 2.5 DA: the answer against the model choices (one seed each)")
     fig.tight_layout()
     fig.savefig(png, dpi=120)
     print(png)
@@ -190,10 +259,16 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--only", nargs="*", help="run only these variants")
     ap.add_argument("--plot-only", action="store_true")
-    ap.add_argument("--set", choices=("numerics", "model", "all"), default="all",
-                    help="the numerical factors (chart.png), the model choices (model.png), or both")
+    ap.add_argument("--set", choices=("numerics", "model", "all", "converged", "model55"),
+                    default="all",
+                    help="the numerical factors (chart.png), the model choices (model.png), both; "
+                         "at the converged setting: the chart (chart_side5.5.csv and .png) or "
+                         "the model choices (model_side5.5.csv and .png)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
+    if a.set in ("converged", "model55"):
+        converged(a)
+        return
     csv_path = os.path.join(a.out, "chart.csv")
     rows = read_rows(csv_path)
     done = {r["name"] for r in rows}
@@ -204,7 +279,7 @@ def main():
         print("%d runs to do (%d done), %d at a time" % (len(todo), len(done), a.jobs), flush=True)
 
         def one(v):
-            row = run_variant(v, a.runs)
+            row = run_variant(v, a.runs, BASE)
             if row:
                 print("%-14s %-16s %-12s %7s s  primary %6s %%  loose %6s %%  at rest %s" % (
                     row["name"], row["factor"], row["value"], row["wall_s"], row["primary_mass_pct"],
@@ -215,6 +290,44 @@ def main():
                                [v[0] for v in VARIANTS + MODEL_VARIANTS])
     plot(read_rows(csv_path), os.path.join(a.out, "chart.png"))
     plot_model(read_rows(csv_path), os.path.join(a.out, "model.png"))
+
+
+def converged(a):
+    """The chart (or the model choices) at the converged setting: one run at a
+    time unless --jobs."""
+    model = a.set == "model55"
+    table = MODEL55_VARIANTS if model else CONVERGED_VARIANTS
+    csv_path = os.path.join(a.out, "model_side5.5.csv" if model else "chart_side5.5.csv")
+    rows = read_rows(csv_path)
+    done = {r["name"] for r in rows}
+    todo = [v for v in table if v[0] not in done and (not a.only or v[0] in a.only)]
+    if not a.plot_only and todo:
+        print("%d runs to do (%d done), %d at a time" % (len(todo), len(done), a.jobs), flush=True)
+
+        def one(v):
+            print("start %s" % v[0], flush=True)
+            row = run_variant(v, os.path.join(a.runs, "side5.5"), CONVERGED_BASE)
+            if row:
+                print("%-14s %-16s %-12s %7s s  %s steps  primary %6s %%  loose %6s %%  at rest %s" % (
+                    row["name"], row["factor"], row["value"], row["wall_s"], row["steps"],
+                    row["primary_mass_pct"], row["loose_number_pct"], row["at_rest"]), flush=True)
+            return row
+
+        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, [v[0] for v in table])
+    if model:
+        # the default and its seeds: the converged chart's runs
+        chart = [r for r in read_rows(os.path.join(a.out, "chart_side5.5.csv"))
+                 if r["name"] in ("default", "seed2", "seed3")]
+        plot_model(chart + read_rows(csv_path), os.path.join(a.out, "model_side5.5.png"),
+                   MODEL55_VARIANTS, MODEL55_DEFAULTS,
+                   "Oedometer at the converged setting (Cu 2.5 DA, side 5.5): "
+                   "the answer against the model choices (one seed each)")
+        return
+    plot(read_rows(csv_path), os.path.join(a.out, "chart_side5.5.png"), CONVERGED_VARIANTS,
+         "Oedometer at the converged setting (Cu 2.5 DA, side 5.5, 19,402 grains):\n"
+         "error against cost, one factor at a time",
+         "wall time of the run (s, 2 ranks, one run at a time, unless 'ranks')", steps_panel=True,
+         symlog=True)
 
 
 if __name__ == "__main__":
