@@ -214,7 +214,7 @@ def plot_model(rows, png, variants=MODEL_VARIANTS, defaults=MODEL_DEFAULTS, titl
     factors = [f for f in defaults if any(v[1] == f and v[0] in by for v in variants)]
     if not factors:
         return
-    fig, axes = plt.subplots(1, len(factors), figsize=(3.2 * len(factors), 3.6), sharey=True,
+    fig, axes = plt.subplots(1, len(factors), figsize=(max(4.0, 3.2 * len(factors)), 4.0), sharey=True,
                              squeeze=False)
     axes = axes[0]
     for ax, fac in zip(axes, factors):
@@ -320,8 +320,7 @@ def converged(a):
                  if r["name"] in ("default", "seed2", "seed3")]
         plot_model(chart + read_rows(csv_path), os.path.join(a.out, "model_side5.5.png"),
                    MODEL55_VARIANTS, MODEL55_DEFAULTS,
-                   "Oedometer at the converged setting (Cu 2.5 DA, side 5.5): "
-                   "the answer against the model choices (one seed each)")
+                   "At the converged setting\n(Cu 2.5 DA, side 5.5, one seed each)")
         return
     plot(read_rows(csv_path), os.path.join(a.out, "chart_side5.5.png"), CONVERGED_VARIANTS,
          "Oedometer at the converged setting (Cu 2.5 DA, side 5.5, 19,402 grains):\n"
