@@ -63,7 +63,7 @@ Run run(const std::vector<SizeInterval>& intervals, double side, double porosity
   spec.arrangement = a;
   spec.start = default_start(a);  // as fix sequential/pack does
   spec.seed = seed;
-  if (layering > 0) spec.layering = layering;
+  if (!std::isnan(layering)) spec.layering = layering;
   out.listed = list.total();
   out.box = Box{spec.lo, spec.hi};
   out.dmax = *std::max_element(list.diameter.begin(), list.diameter.end());
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> psds;
   double side = 6.0;
   std::uint64_t seed = 1;
-  double layering = 0.0;  // 0: the packer's default
+  double layering = NAN;  // not given: the packer's default
   std::vector<Arrangement> rules = {Arrangement::discrete, Arrangement::layerwise};
   std::vector<double> targets;
   for (double t = 0.33; t < 0.4550; t += 0.01) targets.push_back(std::round(t * 100) / 100);
@@ -132,8 +132,8 @@ int main(int argc, char** argv) {
   if (psds.empty())
     for (const char* c : {"2.0", "2.5", "3.0", "3.5"})
       psds.push_back(std::string("input_scripts/psd/cu") + c + ".txt");
-  if (!(side > 0) || targets.empty() || rules.empty() || !(layering >= 0)) {
-    std::fprintf(stderr, "pack_range: side must be > 0, targets and rules not empty, layering >= 0\n");
+  if (!(side > 0) || targets.empty() || rules.empty() || !(std::isnan(layering) || layering > 0)) {
+    std::fprintf(stderr, "pack_range: side must be > 0, targets and rules not empty, layering > 0\n");
     return 2;
   }
 
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
               "|achieved - target| <= 0.005, 27 sub-cubes within 0.03, interior "
               "(layer 1 coarsest diameter) within 0.01\n",
               side, static_cast<unsigned long long>(seed));
-  if (layering > 0) std::printf("# layering %g\n", layering);
+  if (!std::isnan(layering)) std::printf("# layering %g\n", layering);
   std::printf("%-6s %-9s %6s %8s %8s %8s %7s %7s %8s %8s %7s %7s %7s %7s %7s %s\n",
               "soil", "rule", "target", "listed", "placed%", "achieved",
               "sub_min", "sub_max", "interior", "spearman", "assort", "loc_cu", "full",
