@@ -103,7 +103,7 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
   size_peratom_cols = 0;
   peratom_freq = 1;
   vector_flag = 1;
-  size_vector = 9;
+  size_vector = 11;
   global_freq = 1;
   extvector = 0;
   grow_arrays(atom->nmax);
@@ -517,6 +517,11 @@ void FixSequentialPack::check_neighbours(const fabric::PackingResult &res) {
   error->all(FLERR, b);
 }
 
+// Below this size assortativity a layer-wise specimen is reported as hardly
+// layered: discrete specimens measure -0.12 to -0.18, layer-wise ones of
+// Cu 2.0-2.5 at 0.35 +0.17 to +0.36, of Cu 3.0-3.5 -0.07 to +0.07.
+static constexpr double kLayeredAssortativity = 0.1;
+
 void FixSequentialPack::print_summary(const fabric::PackingResult &res,
                                       double seconds) {
   const size_t n = intervals_.size();
@@ -561,6 +566,10 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
   summary_[6] = few_pct;
   summary_[7] = per_grain;
   summary_[8] = placed_vol > 0 ? 100.0 * held_vol / placed_vol : 0.0;
+  // How the sizes are arranged: like sizes touching (LA) or mixed (DA).
+  const double assortativity = measure.size_assortativity();
+  summary_[9] = assortativity;
+  summary_[10] = measure.radius_distance_spearman();
   if (comm->me != 0) return;
   std::ostringstream s;
   s.unsetf(std::ios::fixed);
@@ -592,7 +601,7 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
              placed_vol > 0 ? 100.0 * placed_mass[k] / placed_vol : 0.0);
     s << row;
   }
-  char b[1024];
+  char b[2048];
   double list_porosity = 1.0 - list_.solid_volume() / vol;
   double natural = 1.0 - res.packed_volume / vol;
   snprintf(b, sizeof b,
@@ -606,11 +615,16 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
            "  contacts before loading (grains and walls touching, no force): "
            "%.3f per grain; %.2f %% of the grains (%.2f %% of the mass) "
            "have fewer than 3\n"
+           "  structure: size assortativity of touching pairs %+.3f (0: sizes "
+           "paired at random; below 0: fines between coarse grains; above 0: "
+           "like sizes together), Spearman(radius, distance from the "
+           "centre) %+.3f\n"
            "  time: %.3f s (%.0f particles per second)\n",
            list_.total(), res.placed(), res.placed_in_second_loop, not_placed,
            natural, res.vacancies, porosity_, list_porosity, achieved,
            interior, wall, layer, per_grain, few_pct,
-           placed_vol > 0 ? 100.0 - summary_[8] : 0.0, seconds,
+           placed_vol > 0 ? 100.0 - summary_[8] : 0.0, summary_[9],
+           summary_[10], seconds,
            seconds > 0 ? res.placed() / seconds : 0.0);
   s << b;
   message(s.str());
@@ -648,6 +662,20 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
              "interval are rounded (the list's porosity is %.4f): use a "
              "larger container for a closer match",
              achieved, porosity_, list_porosity);
+    error->warning(FLERR, b);
+  }
+  if (arrangement_ == fabric::Arrangement::layerwise &&
+      std::isfinite(summary_[9]) && summary_[9] < kLayeredAssortativity) {
+    snprintf(b, sizeof b,
+             "Fix sequential/pack: the layer-wise specimen is hardly "
+             "layered: the size assortativity of its touching pairs is "
+             "%+.3f, below %.1f (0: sizes paired at random; discrete gives "
+             "-0.12 to -0.18, layer-wise +0.17 to +0.36 for Cu 2.0-2.5 at "
+             "porosity 0.35). For a soil as wide as this one (Cu %.2f) the "
+             "rule does not keep like sizes together while placing every "
+             "grain: see 'Structure' in the fix's documentation",
+             summary_[9], kLayeredAssortativity,
+             psd_->uniformity_coefficient());
     error->warning(FLERR, b);
   }
 }

@@ -85,7 +85,7 @@ class FixSequentialPack : public Fix {
   // container, of its interior, of its wall layer, seconds, % of the grains
   // with fewer than 3 contacts before loading, contacts per grain, % of the
   // mass in grains with 3 or more.
-  double summary_[9];
+  double summary_[11];
   double lo_[3], hi_[3];
   int inserted_;
   double *interval_;  // per atom: interval index 1..N, 0 = not from this fix

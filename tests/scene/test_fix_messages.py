@@ -8,6 +8,10 @@
 2. After read_restart, the same fix ID with other settings keeps the
    restored specimen and says so, naming both settings; the same settings
    say nothing.
+3. The specimen's structure: the summary and f_ID[10] give the size
+   assortativity of touching pairs (below 0 for a discrete specimen); a
+   layer-wise specimen below 0.1 (Cu 3.0) gets a warning naming the value,
+   a layered one (Cu 2.0) none.
 """
 
 import os
@@ -47,6 +51,16 @@ def main():
     chk.check("porosity 0.35 in 6 coarsest diameters: no warning",
               res.returncode == 0 and "WARNING: Fix sequential/pack"
               not in res.text, res.text[-3000:])
+    vec = su.pack_vector(res.text)
+    line = re.search(r"structure: size assortativity of touching pairs (\S+)",
+                     res.text)
+    chk.check("discrete: f_ID[10], the size assortativity, is below 0 (fines "
+              "between coarse grains) and the summary prints it (%s, %s)"
+              % (vec and vec["size_assortativity"], line and line.group(1)),
+              vec is not None and line is not None
+              and vec["size_assortativity"] < 0.0
+              and abs(float(line.group(1)) - vec["size_assortativity"]) < 6e-4
+              and abs(vec["radius_distance_spearman"]) < 0.1, res.text[-3000:])
     inp = su.write_file(os.path.join(root, "in.small"), su.pack_scene(
         psd, EDGE, porosity=0.35, fix_id=FIX, extra_fix="verbose no"))
     res = su.run_launcher(args, inp)
@@ -62,6 +76,29 @@ def main():
     else:
         chk.check("porosity 0.35 in 3.2 coarsest diameters, all placed: no "
                   "not-placed warning", "not placed (" not in res.text)
+
+    # 3. a layer-wise specimen that is hardly layered says so: Cu 3.0 in a
+    # cube of 4 coarsest diameters (assortativity +0.07, 32,000 grains);
+    # Cu 2.0 at 0.40 in 5 (+0.2) is layered and says nothing
+    for soil, edge, porosity, expect in (("cu3.0", 10.4e-3, 0.35, True),
+                                         ("cu2.0", 8.75e-3, 0.40, False)):
+        inp = su.write_file(os.path.join(root, "in.la_" + soil), su.pack_scene(
+            os.path.join(args.source, "input_scripts", "psd", soil + ".txt"),
+            edge, porosity=porosity, arrangement="layerwise", fix_id=FIX,
+            extra_fix="verbose no"))
+        res = su.run_launcher(args, inp)
+        vec = su.pack_vector(res.text)
+        m = re.search(r"WARNING: Fix sequential/pack: the layer-wise specimen "
+                      r"is hardly layered: the size assortativity of its "
+                      r"touching pairs is (\S+), below 0.1", res.text)
+        a = vec and vec["size_assortativity"]
+        chk.check("layer-wise %s at %s: assortativity %s, %s" % (
+                      soil, su.num(porosity), a,
+                      "warns with that value" if expect else "no warning"),
+                  res.returncode == 0 and vec is not None
+                  and (m is not None) == expect and (a < 0.1) == expect
+                  and (not expect or abs(float(m.group(1)) - a) < 6e-4),
+                  res.text[-3000:])
 
     # 2. redefinition after read_restart with other settings
     restart = os.path.join(root, "packed.restart")
