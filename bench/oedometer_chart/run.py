@@ -128,9 +128,10 @@ MODEL55_VARIANTS = [
     ("mu_wall_0",     "wall friction", "0",  {"mu_wall": "0"},        2, False),
     ("porosity_0.42", "porosity",    "0.42", {"porosity": "0.42"},    2, False),
     ("servo_p",       "servo",       "P (ki 0)", {"ki": "0"},         2, False),
+    ("hertz_1",       "normal contact", "Hertz", {"hertz": "1", "overlap_max": "0.2"}, 2, False),
 ]
 MODEL55_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "wall friction": "0.4",
-                    "porosity": "0.35", "servo": "PI, ki 200/s"}
+                    "porosity": "0.35", "servo": "PI, ki 200/s", "normal contact": "Hooke"}
 # prune and ranks have no "more refined" value: their reference is the default
 FIELDS = ["name", "factor", "value"] + oedometer_runs.RESULT_FIELDS
 
