@@ -615,16 +615,20 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
            "  contacts before loading (grains and walls touching, no force): "
            "%.3f per grain; %.2f %% of the grains (%.2f %% of the mass) "
            "have fewer than 3\n"
-           "  structure: size assortativity of touching pairs %+.3f (0: sizes "
+           "  structure: size assortativity of touching pairs %s (0: sizes "
            "paired at random; below 0: fines between coarse grains; above 0: "
            "like sizes together), Spearman(radius, distance from the "
-           "centre) %+.3f\n"
+           "centre) %s\n"
            "  time: %.3f s (%.0f particles per second)\n",
            list_.total(), res.placed(), res.placed_in_second_loop, not_placed,
            natural, res.vacancies, porosity_, list_porosity, achieved,
            interior, wall, layer, per_grain, few_pct,
-           placed_vol > 0 ? 100.0 - summary_[8] : 0.0, summary_[9],
-           summary_[10], seconds,
+           placed_vol > 0 ? 100.0 - summary_[8] : 0.0,
+           (std::isfinite(summary_[9]) ? fmt("%+.3f", summary_[9])
+                                       : "none (no touching pairs)").c_str(),
+           (std::isfinite(summary_[10]) ? fmt("%+.3f", summary_[10])
+                                        : "none (undefined)").c_str(),
+           seconds,
            seconds > 0 ? res.placed() / seconds : 0.0);
   s << b;
   message(s.str());

@@ -379,19 +379,25 @@ double PackingMeasure::radius_distance_spearman() const {
   return pearson(average_ranks(r_), average_ranks(dist));
 }
 
-std::vector<std::pair<int, int>> PackingMeasure::touching_pairs(double tol) const {
-  std::vector<std::pair<int, int>> out;
+const std::vector<std::pair<int, int>>& PackingMeasure::pairs(double tol) const {
+  if (pairs_tol_ == tol) return pairs_;
+  pairs_.clear();
   for_each_pair(bin(std::max(tol, 0.0)), [&](int i, int j) {
     const double gap = (c_[i] - c_[j]).norm() - r_[i] - r_[j];
-    if (gap < tol * std::min(r_[i], r_[j])) out.emplace_back(i, j);
+    if (gap < tol * std::min(r_[i], r_[j])) pairs_.emplace_back(i, j);
   });
-  std::sort(out.begin(), out.end());
-  return out;
+  std::sort(pairs_.begin(), pairs_.end());
+  pairs_tol_ = tol;
+  return pairs_;
+}
+
+std::vector<std::pair<int, int>> PackingMeasure::touching_pairs(double tol) const {
+  return pairs(tol);
 }
 
 std::vector<int> PackingMeasure::contact_counts(double tol) const {
   std::vector<int> n(c_.size(), 0);
-  for (const auto& [i, j] : touching_pairs(tol)) ++n[i], ++n[j];
+  for (const auto& [i, j] : pairs(tol)) ++n[i], ++n[j];
   for (std::size_t i = 0; i < c_.size(); ++i)
     for (int a = 0; a < 3; ++a) {
       const double reach = r_[i] * (1.0 + tol);
@@ -403,7 +409,7 @@ std::vector<int> PackingMeasure::contact_counts(double tol) const {
 
 double PackingMeasure::size_assortativity(double tol) const {
   std::vector<double> x, y;
-  for (const auto& [i, j] : touching_pairs(tol)) {
+  for (const auto& [i, j] : pairs(tol)) {
     const double a = std::log(r_[i]), b = std::log(r_[j]);
     x.push_back(a), y.push_back(b);
     x.push_back(b), y.push_back(a);

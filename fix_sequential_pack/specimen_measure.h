@@ -115,11 +115,16 @@ class PackingMeasure {
   template <class F>
   void for_each_pair(const Bins& b, F&& f) const;
   double cu_of(const std::vector<int>& ids) const;
+  // The touching pairs for `tol`, searched once and kept: the summary asks
+  // for contact counts and the assortativity of the same pairs.
+  const std::vector<std::pair<int, int>>& pairs(double tol) const;
 
   std::vector<Vec3> c_;
   std::vector<double> r_;
   Box box_;
   Bins bins_;  // inflate 0, for region queries
+  mutable double pairs_tol_ = -1.0;  // the tol of pairs_ (-1: none yet)
+  mutable std::vector<std::pair<int, int>> pairs_;
 };
 
 }  // namespace fabric
