@@ -77,7 +77,7 @@ def main():
         chk.check("porosity 0.35 in 3.2 coarsest diameters, all placed: no "
                   "not-placed warning", "not placed (" not in res.text)
 
-    # 3. a layer-wise specimen that is hardly layered says so: Cu 3.0 in a
+    # 3. a layer-wise specimen that is weakly layered says so: Cu 3.0 in a
     # cube of 4 coarsest diameters (assortativity +0.07, 32,000 grains);
     # Cu 2.0 at 0.40 in 5 (+0.2) is layered and says nothing
     for soil, edge, porosity, expect in (("cu3.0", 10.4e-3, 0.35, True),
@@ -89,7 +89,7 @@ def main():
         res = su.run_launcher(args, inp)
         vec = su.pack_vector(res.text)
         m = re.search(r"WARNING: Fix sequential/pack: the layer-wise specimen "
-                      r"is hardly layered: the size assortativity of its "
+                      r"is weakly layered: the size assortativity of its "
                       r"touching pairs is (\S+), below 0.1", res.text)
         a = vec and vec["size_assortativity"]
         chk.check("layer-wise %s at %s: assortativity %s, %s" % (
