@@ -57,7 +57,9 @@ def liggghts(script, variables, log):
     with open(log, "w") as f:
         rc = subprocess.call(cmd, cwd=ROOT, stdout=f, stderr=subprocess.STDOUT)
     if rc != 0:
-        sys.exit("LIGGGHTS failed (%d): see %s" % (rc, log))
+        with open(log) as f:
+            err = [l.strip() for l in f if "ERROR" in l]
+        sys.exit("LIGGGHTS failed (%d): %s (see %s)" % (rc, err[0] if err else "no ERROR line", log))
 
 
 def read_dump(path):
@@ -165,6 +167,9 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     for soil in a.soils:
         psd = os.path.join("input_scripts", "psd", soil + ".txt")
+        if not os.path.exists(os.path.join(ROOT, psd)):
+            sys.exit("unknown soil '%s': no %s (the shipped soils: cu2.0, cu2.5, cu3.0, cu3.5)"
+                     % (soil, psd))
         d = os.path.join(a.out, soil)
         os.makedirs(d, exist_ok=True)
         t0 = time.time()
