@@ -25,7 +25,9 @@ elapsed time.
                  since the run names do not carry them
   --ranks N      run each scene on N MPI ranks (names get a _ranksN suffix):
                  the rank-count check, e.g. --rules discrete --soils cu2.5
-                 --sides 3.3 --seeds 1 --ranks 4
+                 --sides 3.3 --seeds 1 --ranks 4, or a large soil on both
+                 cores (Cu 3.5 at side 5.5: --ranks 2 --jobs 1); the summary
+                 keeps each rank count a series of its own
 
 At the end it prints, per (rule, soil, side), the mean and the range over
 the seeds of primary % by mass and loose % by number.
@@ -114,20 +116,22 @@ def main():
     if todo:
         oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, order)
     rows = oedometer_runs.read_rows(csv_path)
-    print("\nrule      soil   side  seeds  primary % by mass (mean, range)  loose % by number (mean, range)")
+    print("\nrule      soil   side  ranks  seeds  primary % by mass (mean, range)  loose % by number (mean, range)")
     for r in rules:
         for s in soils:
             for d in sides:
-                got = [x for x in rows if x["rule"] == r and x["soil"] == s and x["side"] == d
-                       and x.get("ranks", "1") in ("", "1")]
-                if not got:
-                    continue
-                p = [float(x["primary_mass_pct"]) for x in got]
-                lo = [float(x["loose_number_pct"]) for x in got]
-                print("%-9s %-6s %-5s %5d  %6.1f  %5.1f-%5.1f                %6.1f  %5.1f-%5.1f"
-                      % (r, s, d, len(got), sum(p) / len(p), min(p), max(p),
-                         sum(lo) / len(lo), min(lo), max(lo)))
-
+                for n in sorted({x.get("ranks") or "1" for x in rows}, key=int):
+                    # runs on another rank count are another series (rank
+                    # count acts as a seed in DEM), not more seeds of this one
+                    got = [x for x in rows if x["rule"] == r and x["soil"] == s and x["side"] == d
+                           and (x.get("ranks") or "1") == n]
+                    if not got:
+                        continue
+                    p = [float(x["primary_mass_pct"]) for x in got]
+                    lo = [float(x["loose_number_pct"]) for x in got]
+                    print("%-9s %-6s %-5s %5s %6d  %6.1f  %5.1f-%5.1f                %6.1f  %5.1f-%5.1f"
+                          % (r, s, d, n, len(got), sum(p) / len(p), min(p), max(p),
+                             sum(lo) / len(lo), min(lo), max(lo)))
 
 if __name__ == "__main__":
     main()
