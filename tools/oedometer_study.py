@@ -14,8 +14,8 @@ run again. Progress: one line per finished run, with the count and the
 elapsed time.
 
   (default)      the full matrix: 2 rules x 4 soils x seeds 1-3, side 5.5
-                 (19,402 grains of Cu 2.5; 179,000 of Cu 3.5: hours per run
-                 on one core, see docs/oedometer.md)
+                 (19,402 grains of Cu 2.5; 158,287 of Cu 3.5: hours per run
+                 on one core, see docs/validation.md, Cost)
   --small        a quick look: both rules x Cu 2.0 and 2.5, seed 1, side 3.3
                  (1,100-4,200 grains, about 3 minutes on 2 cores; the test
                  tests/scene/test_study_small.py checks its findings)
