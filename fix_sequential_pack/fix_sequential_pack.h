@@ -84,8 +84,10 @@ class FixSequentialPack : public Fix {
   // Global vector (see the command page): placed, listed, porosity of the
   // container, of its interior, of its wall layer, seconds, % of the grains
   // with fewer than 3 contacts before loading, contacts per grain, % of the
-  // mass in grains with 3 or more.
-  double summary_[11];
+  // mass in grains with 3 or more, size assortativity of touching pairs,
+  // Spearman(radius, distance from the centre), size assortativity of the
+  // touching pairs in the interior.
+  double summary_[12];
   double lo_[3], hi_[3];
   int inserted_;
   double *interval_;  // per atom: interval index 1..N, 0 = not from this fix

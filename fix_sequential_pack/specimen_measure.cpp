@@ -408,8 +408,17 @@ std::vector<int> PackingMeasure::contact_counts(double tol) const {
 }
 
 double PackingMeasure::size_assortativity(double tol) const {
+  return size_assortativity(box_, tol);
+}
+
+double PackingMeasure::size_assortativity(const Box& region, double tol) const {
+  auto in = [&](int i) {
+    return (c_[i].array() >= region.lo.array()).all() &&
+           (c_[i].array() <= region.hi.array()).all();
+  };
   std::vector<double> x, y;
   for (const auto& [i, j] : pairs(tol)) {
+    if (!in(i) || !in(j)) continue;
     const double a = std::log(r_[i]), b = std::log(r_[j]);
     x.push_back(a), y.push_back(b);
     x.push_back(b), y.push_back(a);

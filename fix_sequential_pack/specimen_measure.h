@@ -80,6 +80,11 @@ class PackingMeasure {
   // Newman's assortativity of ln r over the touching pairs (each pair in
   // both orders); NaN without pairs or without spread.
   double size_assortativity(double tol = 1e-9) const;
+  // The same over the touching pairs whose two centres lie in `region`
+  // (closed box), e.g. the interior: a layer of like sizes on one wall
+  // (layer-wise packing grows a fine one on its floor) raises the value
+  // over the container without any layering inside.
+  double size_assortativity(const Box& region, double tol = 1e-9) const;
 
   // Uniformity coefficient d60/d10 by volume of the spheres whose centre
   // lies in `region` (closed box). The grading curve is the cumulative

@@ -266,7 +266,7 @@ def pack_scene(psd, edge, porosity=0.4, arrangement="discrete", seed=1,
 PACK_VECTOR = ("placed", "listed", "porosity", "interior_porosity",
                "wall_layer_porosity", "seconds", "few_contacts_percent",
                "contacts_per_grain", "held_mass_percent", "size_assortativity",
-               "radius_distance_spearman")
+               "radius_distance_spearman", "interior_size_assortativity")
 
 
 def vector_print(fix_id):

@@ -9,9 +9,11 @@
    restored specimen and says so, naming both settings; the same settings
    say nothing.
 3. The specimen's structure: the summary and f_ID[10] give the size
-   assortativity of touching pairs (below 0 for a discrete specimen); a
-   layer-wise specimen below 0.1 (Cu 3.0) gets a warning naming the value,
-   a layered one (Cu 2.0) none.
+   assortativity of touching pairs (below 0 for a discrete specimen), f_ID[12]
+   that of the interior's pairs. A layer-wise specimen is judged by its
+   interior: Cu 2.0 and Cu 3.0, whose like sizes touch mainly in the fine
+   layer on the floor (f_ID[10] above f_ID[12]), get a warning naming both
+   values as the vector holds them; a discrete specimen gets none.
 """
 
 import os
@@ -52,7 +54,7 @@ def main():
               res.returncode == 0 and "WARNING: Fix sequential/pack"
               not in res.text, res.text[-3000:])
     vec = su.pack_vector(res.text)
-    line = re.search(r"structure: size assortativity of touching pairs (\S+)",
+    line = re.search(r"structure: size assortativity of touching pairs ([-+0-9.]+)",
                      res.text)
     chk.check("discrete: f_ID[10], the size assortativity, is below 0 (fines "
               "between coarse grains) and the summary prints it (%s, %s)"
@@ -77,11 +79,12 @@ def main():
         chk.check("porosity 0.35 in 3.2 coarsest diameters, all placed: no "
                   "not-placed warning", "not placed (" not in res.text)
 
-    # 3. a layer-wise specimen that is weakly layered says so: Cu 3.0 in a
-    # cube of 4 coarsest diameters (assortativity +0.07, 32,000 grains);
-    # Cu 2.0 at 0.40 in 5 (+0.2) is layered and says nothing
-    for soil, edge, porosity, expect in (("cu3.0", 10.4e-3, 0.35, True),
-                                         ("cu2.0", 8.75e-3, 0.40, False)):
+    # 3. a layer-wise specimen not layered in its interior says so, with
+    # the values of the vector: Cu 3.0 in a cube of 4.5 coarsest diameters
+    # (32,000 grains), Cu 2.0 at 0.40 in 8.6 (over the container +0.2 or
+    # more from the fine floor layer, below 0 inside)
+    for soil, edge, porosity in (("cu3.0", 10.4e-3, 0.35),
+                                 ("cu2.0", 8.75e-3, 0.40)):
         inp = su.write_file(os.path.join(root, "in.la_" + soil), su.pack_scene(
             os.path.join(args.source, "input_scripts", "psd", soil + ".txt"),
             edge, porosity=porosity, arrangement="layerwise", fix_id=FIX,
@@ -89,16 +92,34 @@ def main():
         res = su.run_launcher(args, inp)
         vec = su.pack_vector(res.text)
         m = re.search(r"WARNING: Fix sequential/pack: the layer-wise specimen "
-                      r"is weakly layered: the size assortativity of its "
-                      r"touching pairs is (\S+), below 0.1", res.text)
+                      r"is not layered in its interior: the size assortativity "
+                      r"of the touching pairs there is (\S+), below 0.1.*?"
+                      r"Over the whole container it is ([-+0-9.]+)", res.text)
+        line = re.search(r"structure: size assortativity of touching pairs "
+                         r"(\S+), in the interior (\S+) ", res.text)
         a = vec and vec["size_assortativity"]
-        chk.check("layer-wise %s at %s: assortativity %s, %s" % (
-                      soil, su.num(porosity), a,
-                      "warns with that value" if expect else "no warning"),
-                  res.returncode == 0 and vec is not None
-                  and (m is not None) == expect and (a < 0.1) == expect
-                  and (not expect or abs(float(m.group(1)) - a) < 6e-4),
+        ai = vec and vec["interior_size_assortativity"]
+        chk.check("layer-wise %s at %s: assortativity %s over the container, "
+                  "%s in the interior: a warning and the summary give both "
+                  "as the vector holds them" % (soil, su.num(porosity), a, ai),
+                  res.returncode == 0 and vec is not None and m is not None
+                  and line is not None and ai < 0.1 and a > ai
+                  and abs(float(m.group(1)) - ai) < 6e-4
+                  and abs(float(m.group(2)) - a) < 6e-4
+                  and abs(float(line.group(1)) - a) < 6e-4
+                  and abs(float(line.group(2)) - ai) < 6e-4,
                   res.text[-3000:])
+    inp = su.write_file(os.path.join(root, "in.da_cu2.0"), su.pack_scene(
+        os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt"),
+        8.75e-3, porosity=0.40, fix_id=FIX, extra_fix="verbose no"))
+    res = su.run_launcher(args, inp)
+    vec = su.pack_vector(res.text)
+    chk.check("discrete cu2.0 at 0.4: no layering warning, interior "
+              "assortativity below 0 (%s)"
+              % (vec and vec["interior_size_assortativity"]),
+              res.returncode == 0 and vec is not None
+              and "not layered" not in res.text
+              and vec["interior_size_assortativity"] < 0.0, res.text[-3000:])
 
     # 2. redefinition after read_restart with other settings
     restart = os.path.join(root, "packed.restart")
