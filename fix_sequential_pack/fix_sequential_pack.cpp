@@ -679,7 +679,8 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
              "The container is %.1f coarsest diameters wide: %s",
              not_placed, list_.total(),
              which.find(',') == std::string::npos ? "interval" : "intervals",
-             which.c_str(), natural, porosity_, 100.0 * missing_vol / list_.solid_volume(), achieved,
+             which.c_str(), natural, porosity_,
+             100.0 * missing_vol / list_.solid_volume(), achieved,
              list_porosity, edge, advice.c_str());
     error->warning(FLERR, b);
   } else if (std::abs(achieved - porosity_) > 0.005) {
