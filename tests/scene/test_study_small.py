@@ -27,6 +27,9 @@ the scene or the compute shows:
 8. The driver resumes: run again, it finds every run done and runs none.
 9. tools/validation_report.py turns the runs into the validation page's
    tables (a row per model, Table 2 beside the paper's) and figures.
+10. tools/fabric_layers.py cuts every run's final state into layers by
+   height: they hold every grain once and all of the mass, and the whole
+   specimen's primary share is the CSV row's.
 
 Not checked because our model does not reproduce them at this size and
 these seeds (docs/validation.md): LA above DA, primary mass falling with Cu.
@@ -126,6 +129,30 @@ def main():
               and re.search(r"\| DA Cu 2\.5 \| [0-9.() -]+ \| 0\.11 \|", tables) is not None
               and all(os.path.exists(os.path.join(report, f)) for f in pngs),
               p3.stdout[-2000:] + p3.stderr[-2000:])
+    # tools/fabric_layers.py on every run: the layers from the floor to
+    # the top hold every grain once and all of the mass, and the whole
+    # specimen's primary share is the CSV row's.
+    for row in rows:
+        rundir = os.path.join(args.work, "runs", row["name"])
+        p4 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
+                             rundir], cwd=args.source, capture_output=True, text=True, timeout=120)
+        got = {}
+        for line in p4.stdout.splitlines():
+            w = line.rsplit(None, 5)
+            if len(w) == 6 and not line.startswith(("#", "layer ")):
+                got[w[0].strip()] = [float(x) for x in w[2:]]
+        layer_names = ["floor, first half d_N", "floor, second half d_N", "interior",
+                       "top, second half d_N", "top, first half d_N"]
+        ok = p4.returncode == 0 and all(n in got for n in layer_names + ["whole specimen"])
+        grains = sum(got[n][0] for n in layer_names) if ok else -1
+        mass = sum(got[n][1] for n in layer_names) if ok else -1
+        whole = got["whole specimen"][2] if ok else float("nan")
+        chk.check("%s: fabric_layers: %d grains in the layers (CSV %s), mass %.1f %%, "
+                  "whole primary %.2f %% (CSV %s)"
+                  % (row["name"], grains, row["grains"], mass, whole, row["primary_mass_pct"]),
+                  ok and grains == int(row["grains"]) and abs(mass - 100) < 0.1
+                  and abs(whole - float(row["primary_mass_pct"])) < 0.015,
+                  p4.stdout[-1500:] + p4.stderr[-1500:])
     chk.finish()
 
 

@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""Primary fabric by height: where in an oedometer specimen the primary
+fabric lies, layer by layer from the floor to the lid.
+
+    /usr/bin/python3 tools/fabric_layers.py RUN_OR_DUMP [RUN_OR_DUMP ...]
+
+Each argument is a run folder of tools/oedometer_study.py (its final.dump
+is read) or a dump file with the columns id, x, y, z, radius, mass and the
+classification c_pf[2] (1 primary, 0 loose) of compute primary/fabric, as
+input_scripts/in.oedometer writes them. The last snapshot is used.
+
+Heights are counted from the lowest grain's bottom, in coarsest diameters
+d_N (twice the largest radius). A grain belongs to the layer of its centre.
+The layers: the two half diameters on the floor, the interior (one d_N
+from the floor and from the top), and the two half diameters under the
+top. For each: grains, its share of the mass, the primary fabric's share
+of its mass, and its mass-weighted mean diameter over d_N (a layer of
+fines shows as a small value). The last line gives the specimen without its
+lowest half diameter, where a layer-wise specimen keeps its fines
+(docs/validation.md).
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+
+def last_snapshot(path):
+    """Columns of the last snapshot of a LAMMPS text dump, by name."""
+    with open(path) as f:
+        lines = f.readlines()
+    starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
+    if not starts:
+        raise ValueError("not a LAMMPS text dump (no 'ITEM: TIMESTEP' line)")
+    start = starts[-1]
+    if len(lines) < start + 9 or not lines[start + 8].startswith("ITEM: ATOMS"):
+        raise ValueError("the last snapshot is cut short (no 'ITEM: ATOMS' header)")
+    natoms = int(lines[start + 3])
+    names = lines[start + 8].split()[2:]
+    rows = np.loadtxt(lines[start + 9:start + 9 + natoms], ndmin=2)
+    if rows.shape != (natoms, len(names)):
+        raise ValueError("the last snapshot holds %d rows of %d columns, "
+                         "expected %d of %d" % (rows.shape[0], rows.shape[1],
+                                                natoms, len(names)))
+    return {n: rows[:, j] for j, n in enumerate(names)}
+
+
+def layers(cols):
+    """Rows (label, lo, hi, grains, mass %, primary % of its mass,
+    mean diameter / d_N), heights in d_N from the floor."""
+    for need in ("z", "radius", "mass", "c_pf[2]"):
+        if need not in cols:
+            raise ValueError("the dump has no column %s" % need)
+    z, r, m = cols["z"], cols["radius"], cols["mass"]
+    primary = cols["c_pf[2]"] > 0.5
+    dn = 2.0 * r.max()
+    floor = (z - r).min()
+    h = (z - floor) / dn
+    top = ((z + r).max() - floor) / dn
+    cuts = [("floor, first half d_N", 0.0, 0.5),
+            ("floor, second half d_N", 0.5, 1.0),
+            ("interior", 1.0, top - 1.0),
+            ("top, second half d_N", top - 1.0, top - 0.5),
+            ("top, first half d_N", top - 0.5, np.inf),
+            ("all but the lowest half d_N", 0.5, np.inf),
+            ("whole specimen", -np.inf, np.inf)]
+    out = []
+    for label, lo, hi in cuts:
+        g = (h >= lo) & (h < hi)
+        mass = m[g].sum()
+        out.append((label, max(lo, 0.0), min(hi, top), int(g.sum()),
+                    100.0 * mass / m.sum(),
+                    100.0 * m[g & primary].sum() / mass if mass > 0 else float("nan"),
+                    (m[g] * 2.0 * r[g]).sum() / mass / dn if mass > 0 else float("nan")))
+    return out, top
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("paths", nargs="+", metavar="RUN_OR_DUMP")
+    args = p.parse_args()
+    for path in args.paths:
+        dump = os.path.join(path, "final.dump") if os.path.isdir(path) else path
+        if not os.path.isfile(dump):
+            sys.exit("fabric_layers: no dump at %s (give a run folder with final.dump "
+                     "or a dump file)" % dump)
+        try:
+            rows, top = layers(last_snapshot(dump))
+        except ValueError as e:
+            sys.exit("fabric_layers: %s: %s" % (dump, e))
+        print("# %s: height %.2f coarsest diameters" % (dump, top))
+        print("%-28s %13s %8s %7s %10s %9s" % ("layer", "height/d_N", "grains",
+                                             "mass%", "primary%", "d_mean/d_N"))
+        for label, lo, hi, n, mass, prim, dm in rows:
+            print("%-28s %6.2f-%-6.2f %8d %7.2f %10.2f %9.3f"
+                  % (label, lo, hi, n, mass, prim, dm))
+
+
+if __name__ == "__main__":
+    main()
