@@ -15,9 +15,11 @@ The layers: the two half diameters on the floor, the interior (one d_N
 from the floor and from the top), and the two half diameters under the
 top. For each: grains, its share of the mass, the primary fabric's share
 of its mass, and its mass-weighted mean diameter over d_N (a layer of
-fines shows as a small value). The last line gives the specimen without its
-lowest half diameter, where a layer-wise specimen keeps its fines
-(docs/validation.md).
+fines shows as a small value). Then the specimen without its lowest half
+diameter, where a layer-wise specimen keeps its fines (docs/validation.md);
+the core, the grains whose centres lie one d_N or more from every wall
+(the side walls too, found from the grains' extent in x and y), away from
+every wall layer; and the whole specimen.
 """
 import argparse
 import os
@@ -52,6 +54,9 @@ def layers(cols):
     for need in ("z", "radius", "mass", "c_pf[2]"):
         if need not in cols:
             raise ValueError("the dump has no column %s" % need)
+    for need in ("x", "y"):
+        if need not in cols:
+            raise ValueError("the dump has no column %s" % need)
     z, r, m = cols["z"], cols["radius"], cols["mass"]
     primary = cols["c_pf[2]"] > 0.5
     dn = 2.0 * r.max()
@@ -64,10 +69,17 @@ def layers(cols):
             ("top, second half d_N", top - 1.0, top - 0.5),
             ("top, first half d_N", top - 0.5, np.inf),
             ("all but the lowest half d_N", 0.5, np.inf),
+            ("core, 1 d_N from every wall", 1.0, top - 1.0),
             ("whole specimen", -np.inf, np.inf)]
+    side = np.ones(len(z), dtype=bool)
+    for c in (cols["x"], cols["y"]):
+        lo_w, hi_w = (c - r).min(), (c + r).max()
+        side &= (c - lo_w >= dn) & (hi_w - c >= dn)
     out = []
     for label, lo, hi in cuts:
         g = (h >= lo) & (h < hi)
+        if label.startswith("core"):
+            g &= side
         mass = m[g].sum()
         out.append((label, max(lo, 0.0), min(hi, top), int(g.sum()),
                     100.0 * mass / m.sum(),

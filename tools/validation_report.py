@@ -21,10 +21,19 @@ fabric_series.txt, fabric_intervals.txt: the figures). Writes into OUT:
   DA/, LA/           the paper's Figs. 11-19 drawn by tools/plot_fabric.py
                      from the seed-1 run of each Cu (one line per Cu)
 
+With --matrix, tables.md also gets the eight models at one side from the
+rows of several study CSVs (any rank count: the rank count acts as a seed),
+one row per model with each seed's primary % by mass, and OUT/summary_sideS.png,
+the summary figure of those rows (S: their side). With --matrix and no
+--study, only that: OUT/tables_sideS.md and OUT/summary_sideS.png (and the
+page's matrix block with --page), e.g. from the side-5.5 CSVs kept in
+docs/validation.
+
 With --size, tables.md also gets the size study: Cu 2.5 DA per side, from
 the given CSVs of tools/oedometer_study.py (e.g. out/study/study.csv and
 the --convergence runs' CSV). With --page, the tables also replace the
-blocks between <!-- tables -->, <!-- ranks -->, <!-- size --> and their
+blocks between <!-- tables -->, <!-- ranks -->, <!-- size -->,
+<!-- matrix --> and their
 closing markers in that page (docs/validation.md). Prints the tables. Exit status 2 when the CSV holds no row at the side.
 """
 import argparse
@@ -88,16 +97,71 @@ def fmt(s, digits=1):
     return "%.*f (%.*f-%.*f)" % (digits, mean, digits, lo, digits, hi)
 
 
+def col(got, key):
+    return [float(x[key]) for x in got if x.get(key, "") not in ("", None)]
+
+
+def matrix_table(paths):
+    """(lines, summary, side) of the eight models from the rows of the CSVs
+    (one side; any rank count), or None with a message."""
+    mrows = {}
+    for path in paths:
+        for x in oedometer_runs.read_rows(path):
+            mrows[x["name"]] = x
+    sides = sorted({x["side"] for x in mrows.values()}, key=float)
+    if len(sides) != 1:
+        sys.stderr.write("--matrix: the CSVs hold sides %s; give runs of one side\n"
+                         % (", ".join(sides) or "none"))
+        return None
+    summary = {}
+    lines = ["The eight models at side %s d_N (rows of several studies):\n" % sides[0],
+             "| model | grains | seeds (at rest) | primary % by mass per seed | mean "
+             "| range | loose % by number | OZ % | tolerant OZ % | a_c | a_n | wall s |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for rule, tag in RULES:
+        for soil in SOILS:
+            got = sorted((x for x in mrows.values() if x["rule"] == rule
+                          and x["soil"] == soil),
+                         key=lambda x: (int(x["seed"]), int(x.get("ranks") or 1)))
+            if not got:
+                continue
+            s = {k: stats(col(got, k)) for k in
+                 ("primary_mass_pct", "loose_number_pct", "oz_mass_pct",
+                  "oz_tolerant_mass_pct", "fabric_anisotropy", "force_anisotropy",
+                  "wall_s", "grains")}
+            summary[(rule, soil)] = s
+            per_seed = ", ".join(
+                "%.1f%s" % (float(x["primary_mass_pct"]),
+                            "" if (x.get("ranks") or "1") == "1" else
+                            " (%s ranks)" % x["ranks"]) for x in got)
+            p = s["primary_mass_pct"]
+            lines.append("| %s Cu %s | %s | %d (%d) | %s | %.1f | %.1f | %s | %s | %s | %s "
+                         "| %s | %s |"
+                         % (tag, soil[2:], fmt(s["grains"], 0), len(got),
+                            sum(1 for x in got if x["at_rest"] == "yes"), per_seed,
+                            p[0], p[2] - p[1], fmt(s["loose_number_pct"]),
+                            fmt(s["oz_mass_pct"]), fmt(s["oz_tolerant_mass_pct"]),
+                            fmt(s["fabric_anisotropy"], 2), fmt(s["force_anisotropy"], 2),
+                            fmt(s["wall_s"], 0)))
+    return lines, summary, sides[0]
+
+
 def fill_page(page, text):
     """Put the tables of tables.md into the marked blocks of the page."""
     import re
-    head, rest = text.split("\nTable 2 beside ours", 1)
-    table2 = "Table 2 beside ours" + rest.split("\nRank count")[0].split("\nSize study")[0]
-    blocks = {"tables": head.split("\n", 2)[2].strip() + "\n\n" + table2.rstrip()}
+    blocks = {}
+    if "\nTable 2 beside ours" in text:
+        head, rest = text.split("\nTable 2 beside ours", 1)
+        table2 = "Table 2 beside ours" + rest.split("\nRank count")[0].split("\nSize study")[0]
+        table2 = table2.split("\nThe eight models at")[0]
+        blocks["tables"] = head.split("\n", 2)[2].strip() + "\n\n" + table2.rstrip()
     if "Rank count" in text:
-        blocks["ranks"] = text.split("MPI ranks):\n", 1)[1].split("\nSize study")[0].strip()
+        blocks["ranks"] = (text.split("MPI ranks):\n", 1)[1].split("\nSize study")[0]
+                           .split("\nThe eight models at")[0].strip())
     if "Size study" in text:
-        blocks["size"] = text.split("1 MPI rank:\n", 1)[1].strip()
+        blocks["size"] = text.split("1 MPI rank:\n", 1)[1].split("\nThe eight models at")[0].strip()
+    if "The eight models at" in text:
+        blocks["matrix"] = text.split("(rows of several studies):\n", 1)[1].strip()
     body = open(page).read()
     for name, table in blocks.items():
         body = re.sub(r"<!-- %s -->.*?<!-- /%s -->" % (name, name),
@@ -106,14 +170,77 @@ def fill_page(page, text):
     open(page, "w").write(body)
 
 
+def plot_summary(summary, side, path):
+    """Primary % by mass, loose % by number and OZ % against Cu, both rules,
+    bars for the range over seeds, the paper's values beside them."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4))
+    keys = [("primary_mass_pct", "primary fabric, % by mass"),
+            ("loose_number_pct", "loose grains, % by number"),
+            ("oz_mass_pct", "overlapping zone, % of the mass")]
+    for ax, (key, label) in zip(axes, keys):
+        for i, (rule, tag) in enumerate(RULES):
+            cus, mean, err = [], [], [[], []]
+            for soil in SOILS:
+                s = summary.get((rule, soil), {}).get(key)
+                if s:
+                    cu = float(soil[2:]) + (i - 0.5) * 0.04
+                    cus.append(cu)
+                    mean.append(s[0])
+                    err[0].append(s[0] - s[1])
+                    err[1].append(s[2] - s[0])
+            if cus:
+                ax.errorbar(cus, mean, yerr=err, marker="os"[i], capsize=4, label="ours, " + tag)
+            if key == "oz_mass_pct":
+                tol = [(float(s_[2:]), summary[(rule, s_)]["oz_tolerant_mass_pct"][0])
+                       for s_ in SOILS if summary.get((rule, s_), {}).get("oz_tolerant_mass_pct")]
+                if tol:
+                    ax.plot(*zip(*tol), ":", marker="os"[i], mfc="none", color="C%d" % i,
+                            label="ours, %s, oz_tolerance 0.1" % tag)
+                ax.plot([float(s[2:]) for s in SOILS], [PAPER_TABLE2[(rule, s)][2] for s in SOILS],
+                        "x--", color="C%d" % i, label="paper, " + tag)
+        if key == "primary_mass_pct":
+            ax.axhspan(40, 90, color="0.9", zorder=0, label="paper: 40-90 %")
+        ax.set_xlabel("Cu")
+        ax.set_ylabel(label)
+        ax.set_xticks([2.0, 2.5, 3.0, 3.5])
+        ax.set_ylim(0, 100)
+        ax.legend(fontsize=7, loc="lower left")
+    fig.suptitle("The paper's eight models at side %s d_N (bars: range over seeds)" % side)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    print(path)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--study", default=os.path.join(ROOT, "out", "study"))
+    ap.add_argument("--study")
     ap.add_argument("--side", default="3.3")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
     ap.add_argument("--size", nargs="*", default=[], metavar="CSV")
+    ap.add_argument("--matrix", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--page", metavar="MD")
     a = ap.parse_args()
+    if a.study is None and a.matrix:
+        # only the eight models from the CSVs: the table and its summary figure
+        got = matrix_table(a.matrix)
+        if got is None:
+            return 2
+        mlines, matrix_summary, matrix_side = got
+        text = "\n".join(mlines) + "\n"
+        os.makedirs(a.out, exist_ok=True)
+        open(os.path.join(a.out, "tables_side%s.md" % matrix_side), "w").write(text)
+        if a.page:
+            fill_page(a.page, text)
+        print(text)
+        plot_summary(matrix_summary, matrix_side,
+                     os.path.join(a.out, "summary_side%s.png" % matrix_side))
+        return 0
+    if a.study is None:
+        a.study = os.path.join(ROOT, "out", "study")
     rows = oedometer_runs.read_rows(os.path.join(a.study, "study.csv"))
     ranks_rows = [r for r in rows if r["side"] == a.side]
     rows = [r for r in ranks_rows if r.get("ranks", "1") in ("", "1")]
@@ -133,9 +260,6 @@ def main():
         w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         w.writerows(sorted(ranks_rows, key=lambda r: r["name"]))
-
-    def col(got, key):
-        return [float(x[key]) for x in got if x.get(key, "") not in ("", None)]
 
     lines = ["Side %s coarsest diameters, 1 MPI rank; mean (range) over the seeds.\n" % a.side,
              "| model | grains | seeds (at rest) | loose % before loading | primary % by mass "
@@ -206,51 +330,23 @@ def main():
                             ", ".join("%.1f" % v for v in p), sum(p) / len(p), max(p) - min(p),
                             stats(col(got, "loose_number_pct"))[0],
                             fmt(stats(col(got, "wall_s")), 0)))
+    matrix_summary = None
+    if a.matrix:
+        got = matrix_table(a.matrix)
+        if got is None:
+            return 2
+        mlines, matrix_summary, matrix_side = got
+        lines += [""] + mlines
     text = "\n".join(lines) + "\n"
     open(os.path.join(a.out, "tables.md"), "w").write(text)
     if a.page:
         fill_page(a.page, text)
     print(text)
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4))
-    keys = [("primary_mass_pct", "primary fabric, % by mass"),
-            ("loose_number_pct", "loose grains, % by number"),
-            ("oz_mass_pct", "overlapping zone, % of the mass")]
-    for ax, (key, label) in zip(axes, keys):
-        for i, (rule, tag) in enumerate(RULES):
-            cus, mean, err = [], [], [[], []]
-            for soil in SOILS:
-                s = summary.get((rule, soil), {}).get(key)
-                if s:
-                    cu = float(soil[2:]) + (i - 0.5) * 0.04
-                    cus.append(cu)
-                    mean.append(s[0])
-                    err[0].append(s[0] - s[1])
-                    err[1].append(s[2] - s[0])
-            if cus:
-                ax.errorbar(cus, mean, yerr=err, marker="os"[i], capsize=4, label="ours, " + tag)
-            if key == "oz_mass_pct":
-                tol = [(float(s_[2:]), summary[(rule, s_)]["oz_tolerant_mass_pct"][0])
-                       for s_ in SOILS if summary.get((rule, s_), {}).get("oz_tolerant_mass_pct")]
-                if tol:
-                    ax.plot(*zip(*tol), ":", marker="os"[i], mfc="none", color="C%d" % i,
-                            label="ours, %s, oz_tolerance 0.1" % tag)
-                ax.plot([float(s[2:]) for s in SOILS], [PAPER_TABLE2[(rule, s)][2] for s in SOILS],
-                        "x--", color="C%d" % i, label="paper, " + tag)
-        if key == "primary_mass_pct":
-            ax.axhspan(40, 90, color="0.9", zorder=0, label="paper: 40-90 %")
-        ax.set_xlabel("Cu")
-        ax.set_ylabel(label)
-        ax.set_xticks([2.0, 2.5, 3.0, 3.5])
-        ax.set_ylim(0, 100)
-        ax.legend(fontsize=7, loc="lower left")
-    fig.suptitle("The paper's eight models at side %s d_N (bars: range over seeds)" % a.side)
-    fig.tight_layout()
-    fig.savefig(os.path.join(a.out, "summary.png"), dpi=90)
-    print(os.path.join(a.out, "summary.png"))
+    plot_summary(summary, a.side, os.path.join(a.out, "summary.png"))
+    if matrix_summary:
+        plot_summary(matrix_summary, matrix_side,
+                     os.path.join(a.out, "summary_side%s.png" % matrix_side))
 
     for rule, tag in RULES:
         dirs, labels = [], []

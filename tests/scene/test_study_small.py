@@ -118,7 +118,8 @@ def main():
                   p2.returncode == 0 and re.search(r"4 done, 0 to run", p2.stdout) is not None)
     report = os.path.join(args.work, "report")
     p3 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
-                         "--study", args.work, "--side", "3.3", "--out", report],
+                         "--study", args.work, "--side", "3.3", "--out", report,
+                         "--matrix", os.path.join(args.work, "study.csv")],
                         cwd=args.source, capture_output=True, text=True, timeout=600)
     tables = open(os.path.join(report, "tables.md")).read() if p3.returncode == 0 else ""
     pngs = ["summary.png", "DA/fig11_loose_number.png", "LA/fig19_primary_of_interval.png",
@@ -129,6 +130,17 @@ def main():
               and re.search(r"\| DA Cu 2\.5 \| [0-9.() -]+ \| 0\.11 \|", tables) is not None
               and all(os.path.exists(os.path.join(report, f)) for f in pngs),
               p3.stdout[-2000:] + p3.stderr[-2000:])
+    # --matrix: one row per model from the CSV, each seed's primary % as the
+    # CSV has it, and its own summary figure.
+    matrix = tables.split("The eight models at side 3.3 d_N", 1)[1] if tables else ""
+    want = {"%s Cu %s" % ("DA" if r["rule"] == "discrete" else "LA", r["soil"][2:]):
+            "%.1f" % float(r["primary_mass_pct"]) for r in rows}
+    chk.check("validation_report --matrix: a row per model with its seed's primary %% %s" % want,
+              all(re.search(r"\| %s \| [0-9.() -]+ \| 1 \(1\) \| %s \| %s \|"
+                            % (re.escape(m), re.escape(v), re.escape(v)), matrix)
+                  for m, v in want.items())
+              and os.path.exists(os.path.join(report, "summary_side3.3.png")),
+              matrix[:2000])
     # tools/fabric_layers.py on every run: the layers from the floor to
     # the top hold every grain once and all of the mass, and the whole
     # specimen's primary share is the CSV row's.
@@ -153,6 +165,11 @@ def main():
                   ok and grains == int(row["grains"]) and abs(mass - 100) < 0.1
                   and abs(whole - float(row["primary_mass_pct"])) < 0.015,
                   p4.stdout[-1500:] + p4.stderr[-1500:])
+        core = got.get("core, 1 d_N from every wall", [-1])[0]
+        chk.check("%s: fabric_layers: the core (%d grains) lies inside the interior (%d)"
+                  % (row["name"], core, got["interior"][0] if ok else -1),
+                  ok and 0 < core < got["interior"][0],
+                  p4.stdout[-1500:])
     chk.finish()
 
 
