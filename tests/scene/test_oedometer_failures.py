@@ -12,7 +12,8 @@ a run that goes on and prints numbers):
    estimated overlap and overlap_max;
 4. a container too small for the coarsest interval (side 1.8 coarsest
    diameters: 0.36 grains, rounded to none): stopped before packing;
-5. a value of the `hertz` switch other than 0 or 1: stopped before packing;
+5. a value of the `hertz` switch other than 0 or 1, and a negative
+   stiffness number `kappa`: stopped before packing;
    and contact dashpots too strong for the time step (zeta 2: G_n dt 0.62,
    measured to throw grains out of the container): stopped before the first
    step, naming G_n, dt and zeta;
@@ -29,11 +30,14 @@ a run that goes on and prints numbers):
 8. and where it must not stop: a layer-wise Cu 2.0 specimen at 0.35 whose
    packing leaves a whole interval unplaced (the packed-full porosity is
    above the target) is still classified, by the packer's interval index
-   (intervals_from), with the packer's warning and no ERROR;
+   (intervals_from), with the packer's warning and no ERROR; the same run
+   sets its contacts by the stiffness number (kappa 2000): K_n = K_t =
+   2000 stress d_N, as its STIFFNESS line prints;
 9. the `error` command itself: the message with its ${variables}
    substituted, exit status 1, and a usage message when it has none.
 """
 import os
+import re
 
 import scene_util as su
 
@@ -50,6 +54,8 @@ CASES = [
      ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
     ("a contact law the scene does not have", {"hertz": 2},
      ["hertz 2: use 0 (linear springs, the default) or 1 (Hertzian)"]),
+    ("a negative stiffness number", {"kappa": -1},
+     ["kappa -1: use 0 (K_n, K_t from kn, kt) or a positive stiffness number"]),
     ("contact dashpots too strong for the time step", {"zeta": 2},
      ["the contact damping G_n", "at or above 0.5", "lower zeta (2;", "or dtfac (0.4)"]),
 ]
@@ -99,12 +105,20 @@ def main():
 
     out = os.path.join(args.work, "empty_interval")
     res = su.run_launcher(args, scene, variables={
-        "out": out, "t_max": 0.002, "side": 3.3, "arrangement": "layerwise",
+        "out": out, "t_max": 0.002, "side": 3.3, "arrangement": "layerwise", "kappa": 2000,
         "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")},
         log=out + ".log", cwd=args.source, timeout=600)
     chk.check("an interval left empty by the packer: classified anyway (exit %s, no ERROR, FABRIC line)"
               % res.returncode, res.returncode == 0 and not res.errors() and "FABRIC:" in res.text
               and "particles not placed" in res.text, res.describe())
+    m = re.search(r"^STIFFNESS: K_n (\S+) N/m, K_t (\S+) N/m; stiffness number "
+                  r"K_n / \(stress d_N\) = (\S+) ", res.text, re.M)
+    dn = re.search(r"^psd_info .*d_N = (\S+) ", res.text, re.M)   # 6 digits
+    chk.check("kappa 2000 sets K_n = K_t = 2000 stress d_N (STIFFNESS line %s, d_N %s)"
+              % (m and m.groups(), dn and dn.group(1)),
+              m is not None and dn is not None and m.group(1) == m.group(2)
+              and abs(float(m.group(1)) / (2000 * 1e5 * float(dn.group(1))) - 1) < 1e-5
+              and abs(float(m.group(3)) - 2000) < 1e-6, res.text[-1500:])
 
     inp = su.write_file(os.path.join(args.work, "in.error"), ERROR_SCRIPT)
     res = su.run_launcher(args, inp, timeout=60)
