@@ -2,7 +2,7 @@
 """The paper's eight models: layer-wise and discrete arrangement x Cu 2.0,
 2.5, 3.0, 3.5 at porosity 0.35 in the zero-gravity oedometer, with seeds.
 
-    /usr/bin/python3 tools/oedometer_study.py [--small | --convergence]
+    /usr/bin/python3 tools/oedometer_study.py [--small | --trend | --convergence]
         [--sides 5.5] [--seeds 1 2 3] [--soils cu2.0 ...] [--rules discrete layerwise]
         [--ranks 1] [--var NAME=VALUE ...] [--jobs 2] [--out out/study]
 
@@ -19,6 +19,11 @@ elapsed time.
   --small        a quick look: both rules x Cu 2.0 and 2.5, seed 1, side 3.3
                  (1,100-4,200 grains, about 3 minutes on 2 cores; the test
                  tests/scene/test_study_small.py checks its findings)
+  --trend        the paper's "the smaller Cu, the more primary mass" at one
+                 stiffness number: DA Cu 2.0 and 2.5, seed 1, side 5.5,
+                 -var kappa 1963 overlap_max 0.2 (5,300 and 19,400 grains,
+                 about 2 minutes on 2 cores; out/trend; the test
+                 tests/scene/test_study_trend.py checks it)
   --convergence  the size study: Cu 2.5 DA at sides 3.3, 4.4, 5.5 x seeds 1-3
   --var N=V      further -var settings of the scene for every run (e.g.
                  t_max=0.1); give each such setting its own --out folder,
@@ -54,6 +59,7 @@ def name_of(rule, soil, side, seed, ranks=1):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--small", action="store_true")
+    ap.add_argument("--trend", action="store_true")
     ap.add_argument("--convergence", action="store_true")
     ap.add_argument("--sides", nargs="*")
     ap.add_argument("--seeds", nargs="*")
@@ -62,10 +68,20 @@ def main():
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--var", nargs="*", default=[], metavar="NAME=VALUE")
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--out", default=os.path.join(ROOT, "out", "study"))
+    ap.add_argument("--out")
     a = ap.parse_args()
+    if a.out is None:
+        a.out = os.path.join(ROOT, "out", "trend" if a.trend else "study")
+    extra = {}
+    if a.small + a.trend + a.convergence > 1:
+        ap.error("give one of --small, --trend, --convergence")
     if a.small:
         rules, soils, sides, seeds = RULES, ["cu2.0", "cu2.5"], ["3.3"], ["1"]
+    elif a.trend:
+        # kappa fixed for both soils (K_n = kappa stress d_N); the default's
+        # fixed K_n is 1.6 times softer, relative to the load, for Cu 2.5
+        rules, soils, sides, seeds = ["discrete"], ["cu2.0", "cu2.5"], ["5.5"], ["1"]
+        extra = {"kappa": "1963", "overlap_max": "0.2"}
     elif a.convergence:
         rules, soils, sides, seeds = ["discrete"], ["cu2.5"], ["3.3", "4.4", "5.5"], ["1", "2", "3"]
     else:
@@ -77,7 +93,6 @@ def main():
             ap.error("no PSD file input_scripts/psd/%s.txt" % s)
     os.makedirs(a.out, exist_ok=True)
     csv_path = os.path.join(a.out, "study.csv")
-    extra = {}
     for nv in a.var:
         if "=" not in nv:
             ap.error("--var %s: give NAME=VALUE" % nv)

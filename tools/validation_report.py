@@ -27,7 +27,9 @@ one row per model with each seed's primary % by mass, and OUT/summary_sideS.png,
 the summary figure of those rows (S: their side). With --matrix and no
 --study, only that: OUT/tables_sideS.md and OUT/summary_sideS.png (and the
 page's matrix block with --page), e.g. from the side-5.5 CSVs kept in
-docs/validation.
+docs/validation. --label L names a second matrix (runs with other scene
+settings, e.g. one stiffness number): OUT/tables_sideS_L.md,
+OUT/summary_sideS_L.png and the page block <!-- matrix-L -->.
 
 With --size, tables.md also gets the size study: Cu 2.5 DA per side, from
 the given CSVs of tools/oedometer_study.py (e.g. out/study/study.csv and
@@ -101,7 +103,7 @@ def col(got, key):
     return [float(x[key]) for x in got if x.get(key, "") not in ("", None)]
 
 
-def matrix_table(paths):
+def matrix_table(paths, label=""):
     """(lines, summary, side) of the eight models from the rows of the CSVs
     (one side; any rank count), or None with a message."""
     mrows = {}
@@ -114,7 +116,8 @@ def matrix_table(paths):
                          % (", ".join(sides) or "none"))
         return None
     summary = {}
-    lines = ["The eight models at side %s d_N (rows of several studies):\n" % sides[0],
+    lines = ["The eight models at side %s d_N%s (rows of several studies):\n"
+             % (sides[0], ", " + label if label else ""),
              "| model | grains | seeds (at rest) | primary % by mass per seed | mean "
              "| range | loose % by number | OZ % | tolerant OZ % | a_c | a_n | wall s |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -146,8 +149,9 @@ def matrix_table(paths):
     return lines, summary, sides[0]
 
 
-def fill_page(page, text):
-    """Put the tables of tables.md into the marked blocks of the page."""
+def fill_page(page, text, label=""):
+    """Put the tables of tables.md into the marked blocks of the page (the
+    matrix into <!-- matrix-LABEL --> when a label is given)."""
     import re
     blocks = {}
     if "\nTable 2 beside ours" in text:
@@ -161,16 +165,17 @@ def fill_page(page, text):
     if "Size study" in text:
         blocks["size"] = text.split("1 MPI rank:\n", 1)[1].split("\nThe eight models at")[0].strip()
     if "The eight models at" in text:
-        blocks["matrix"] = text.split("(rows of several studies):\n", 1)[1].strip()
+        blocks["matrix-" + label if label else "matrix"] = (
+            text.split("(rows of several studies):\n", 1)[1].strip())
     body = open(page).read()
     for name, table in blocks.items():
-        body = re.sub(r"<!-- %s -->.*?<!-- /%s -->" % (name, name),
+        body = re.sub(r"<!-- %s -->.*?<!-- /%s -->" % (re.escape(name), re.escape(name)),
                       lambda m: "<!-- %s -->\n%s\n<!-- /%s -->" % (name, table, name),
                       body, flags=re.S)
     open(page, "w").write(body)
 
 
-def plot_summary(summary, side, path):
+def plot_summary(summary, side, path, label=""):
     """Primary % by mass, loose % by number and OZ % against Cu, both rules,
     bars for the range over seeds, the paper's values beside them."""
     import matplotlib
@@ -180,7 +185,7 @@ def plot_summary(summary, side, path):
     keys = [("primary_mass_pct", "primary fabric, % by mass"),
             ("loose_number_pct", "loose grains, % by number"),
             ("oz_mass_pct", "overlapping zone, % of the mass")]
-    for ax, (key, label) in zip(axes, keys):
+    for ax, (key, ylabel) in zip(axes, keys):
         for i, (rule, tag) in enumerate(RULES):
             cus, mean, err = [], [], [[], []]
             for soil in SOILS:
@@ -204,11 +209,12 @@ def plot_summary(summary, side, path):
         if key == "primary_mass_pct":
             ax.axhspan(40, 90, color="0.9", zorder=0, label="paper: 40-90 %")
         ax.set_xlabel("Cu")
-        ax.set_ylabel(label)
+        ax.set_ylabel(ylabel)
         ax.set_xticks([2.0, 2.5, 3.0, 3.5])
         ax.set_ylim(0, 100)
         ax.legend(fontsize=7, loc="lower left")
-    fig.suptitle("The paper's eight models at side %s d_N (bars: range over seeds)" % side)
+    fig.suptitle("The paper's eight models at side %s d_N%s (bars: range over seeds)"
+                 % (side, ", " + label if label else ""))
     fig.tight_layout()
     fig.savefig(path, dpi=90)
     plt.close(fig)
@@ -223,21 +229,27 @@ def main():
     ap.add_argument("--size", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--matrix", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--page", metavar="MD")
+    ap.add_argument("--label", default="", help="names a second --matrix (files and page block)")
     a = ap.parse_args()
+    if a.label and not a.label.replace("_", "").replace(".", "").isalnum():
+        sys.stderr.write("--label %s: letters, digits, '.' and '_' only\n" % a.label)
+        return 2
+    suffix = "_" + a.label if a.label else ""
     if a.study is None and a.matrix:
         # only the eight models from the CSVs: the table and its summary figure
-        got = matrix_table(a.matrix)
+        got = matrix_table(a.matrix, a.label)
         if got is None:
             return 2
         mlines, matrix_summary, matrix_side = got
         text = "\n".join(mlines) + "\n"
         os.makedirs(a.out, exist_ok=True)
-        open(os.path.join(a.out, "tables_side%s.md" % matrix_side), "w").write(text)
+        open(os.path.join(a.out, "tables_side%s%s.md" % (matrix_side, suffix)), "w").write(text)
         if a.page:
-            fill_page(a.page, text)
+            fill_page(a.page, text, a.label)
         print(text)
         plot_summary(matrix_summary, matrix_side,
-                     os.path.join(a.out, "summary_side%s.png" % matrix_side))
+                     os.path.join(a.out, "summary_side%s%s.png" % (matrix_side, suffix)),
+                     a.label)
         return 0
     if a.study is None:
         a.study = os.path.join(ROOT, "out", "study")
@@ -332,7 +344,7 @@ def main():
                             fmt(stats(col(got, "wall_s")), 0)))
     matrix_summary = None
     if a.matrix:
-        got = matrix_table(a.matrix)
+        got = matrix_table(a.matrix, a.label)
         if got is None:
             return 2
         mlines, matrix_summary, matrix_side = got
@@ -340,13 +352,14 @@ def main():
     text = "\n".join(lines) + "\n"
     open(os.path.join(a.out, "tables.md"), "w").write(text)
     if a.page:
-        fill_page(a.page, text)
+        fill_page(a.page, text, a.label)
     print(text)
 
-    plot_summary(summary, a.side, os.path.join(a.out, "summary.png"))
+    plot_summary(summary, a.side, os.path.join(a.out, "summary.png"), a.label)
     if matrix_summary:
         plot_summary(matrix_summary, matrix_side,
-                     os.path.join(a.out, "summary_side%s.png" % matrix_side))
+                     os.path.join(a.out, "summary_side%s%s.png" % (matrix_side, suffix)),
+                     a.label)
 
     for rule, tag in RULES:
         dirs, labels = [], []

@@ -1,0 +1,63 @@
+#!/usr/bin/python3
+"""Scene test: the study driver's trend check (tools/oedometer_study.py
+--trend: DA Cu 2.0 and 2.5, seed 1, side 5.5, one stiffness number
+kappa = K_n / (stress d_N) = 1,963 for both soils) reproduces the paper's
+"the smaller Cu, the more primary mass" (docs/validation.md, The eight
+models at one stiffness number):
+
+1. The driver writes one CSV row per run, and both runs end at rest with
+   the lid stress within 5 % of 100 kPa.
+2. Each run's scene sets K_n from kappa: its STIFFNESS line prints
+   K_n / (stress d_N) = 1963.
+3. Cu 2.0 holds at least 1 point more of its mass in the primary fabric
+   than Cu 2.5 (measured: 61.3 against 56.0 %; seeds 1-3 61.3-64.8 against
+   56.0-57.0; half the time step 56.1 against 53.7).
+4. Both lie inside the paper's 40-90 % of the mass.
+
+At the default's fixed K_n the primary fraction rises with Cu instead
+(the wider soil's coarse grains are strained more), and at side 3.3 the
+seed spread (up to 16 points at this kappa) hides the trend: this is why
+the check runs at side 5.5 and one kappa (docs/validation.md).
+"""
+import csv
+import os
+import re
+import subprocess
+
+import scene_util as su
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    driver = os.path.join(args.source, "tools", "oedometer_study.py")
+    cmd = ["/usr/bin/python3", driver, "--trend", "--jobs", "2", "--out", args.work]
+    p = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=850)
+    print(p.stdout[-3000:], p.stderr[-3000:])
+    chk.check("the driver exits 0 (got %d)" % p.returncode, p.returncode == 0)
+    csv_path = os.path.join(args.work, "study.csv")
+    rows = {r["soil"]: r for r in csv.DictReader(open(csv_path))} if os.path.exists(csv_path) else {}
+    chk.check("2 CSV rows (DA Cu 2.0, 2.5), got %s" % sorted(rows), sorted(rows) == ["cu2.0", "cu2.5"])
+    for soil, r in sorted(rows.items()):
+        chk.check("%s: at rest (%s), lid stress %s Pa within 5 %% of 100 kPa"
+                  % (r["name"], r["at_rest"], r["lid_stress_Pa"]),
+                  r["at_rest"] == "yes" and abs(float(r["lid_stress_Pa"]) - 1e5) <= 5e3)
+        screen = os.path.join(args.work, "runs", r["name"], "screen.txt")
+        text = open(screen, errors="replace").read() if os.path.exists(screen) else ""
+        m = re.search(r"STIFFNESS:.*K_n / \(stress d_N\) = ([0-9.eE+-]+)", text)
+        chk.check("%s: the STIFFNESS line gives kappa 1963 (%s)"
+                  % (r["name"], m.group(0) if m else "no STIFFNESS line"),
+                  m is not None and abs(float(m.group(1)) - 1963) <= 1)
+        pm = float(r["primary_mass_pct"])
+        chk.check("%s: primary %.2f %% by mass inside the paper's 40-90 %%" % (r["name"], pm),
+                  40 <= pm <= 90)
+    if len(rows) == 2:
+        a, b = float(rows["cu2.0"]["primary_mass_pct"]), float(rows["cu2.5"]["primary_mass_pct"])
+        chk.check("the smaller Cu, the more primary mass: Cu 2.0 %.2f %% >= Cu 2.5 %.2f %% + 1"
+                  % (a, b), a >= b + 1)
+    return chk.finish()
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
