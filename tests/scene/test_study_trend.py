@@ -11,7 +11,7 @@ models at one stiffness number):
    K_n / (stress d_N) = 1963.
 3. Cu 2.0 holds at least 1 point more of its mass in the primary fabric
    than Cu 2.5 (measured: 61.3 against 56.0 %; seeds 1-3 61.3-64.8 against
-   56.0-57.0; half the time step 56.1 against 53.7).
+   56.0-57.0; half the time step, seeds 1-3: 56.1-68.3 against 53.4-54.3).
 4. Both lie inside the paper's 40-90 % of the mass.
 
 At the default's fixed K_n the primary fraction rises with Cu instead
