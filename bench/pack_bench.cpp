@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 #include "front_packer.h"
@@ -33,7 +34,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: pack_bench [psd-file] [max-N >= 1e4]\n");
     return 2;
   }
-  auto psd = ParticleSizeDistribution::read(path);
+  if (path.rfind("-", 0) == 0) {
+    std::fprintf(stderr, "usage: pack_bench [psd-file] [max-N >= 1e4]\n");
+    return 2;
+  }
+  auto psd = [&] {
+    try {
+      return ParticleSizeDistribution::read(path);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "pack_bench: %s\n", e.what());
+      std::exit(2);
+    }
+  }();
   auto intervals = psd.equal_mass_intervals(20);
   const double porosity = 0.35;
   // Particles per unit volume at this porosity, to size the container.
@@ -42,9 +54,10 @@ int main(int argc, char** argv) {
   for (double t : unit.target_count) per_volume += t;
   std::printf("# %s (Cu %.2f), porosity %.2f, 20 intervals, seed 1, default start (DA auto, LA floor)\n",
               path.c_str(), psd.uniformity_coefficient(), porosity);
-  std::printf("%-10s %9s %9s %8s %9s %9s %12s %11s %10s %9s %9s\n", "rule",
+  std::printf("%-10s %9s %9s %8s %9s %9s %12s %11s %10s %9s %9s %7s %7s\n", "rule",
               "N", "placed", "unplaced", "seconds", "cpu_s", "particles/s",
-              "us/particle", "B/particle", "porosity", "full");
+              "us/particle", "B/particle", "porosity", "full", "sites/p",
+              "tries/p");
   std::fflush(stdout);
   for (double n = 1e4; n <= max_n * 1.001; n *= 10) {
     for (Arrangement a : {Arrangement::discrete, Arrangement::layerwise}) {
@@ -62,11 +75,12 @@ int main(int argc, char** argv) {
       double s = double(std::clock() - c0) / CLOCKS_PER_SEC;
       double vol = 0.0;
       for (double rr : r.radius) vol += sphere_volume(2.0 * rr);
-      std::printf("%-10s %9lld %9lld %8lld %9.3f %9.3f %12.0f %11.2f %10.0f %9.4f %9.4f\n",
+      std::printf("%-10s %9lld %9lld %8lld %9.3f %9.3f %12.0f %11.2f %10.0f %9.4f %9.4f %7.1f %7.1f\n",
                   to_string(a).c_str(), list.total(), r.placed(), r.unplaced(), wall, s,
                   r.placed() / s, 1e6 * s / r.placed(),
                   double(r.peak_bytes) / r.placed(), 1.0 - vol / V,
-                  1.0 - r.packed_volume / V);
+                  1.0 - r.packed_volume / V, double(r.sites) / r.placed(),
+                  double(r.attempts) / r.placed());
       std::fflush(stdout);
     }
   }

@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <cstdlib>
 #include <numeric>
 #include <sstream>
@@ -151,7 +152,14 @@ int main(int argc, char** argv) {
 
   std::vector<Summary> summary;
   for (const std::string& path : psds) {
-    auto psd = ParticleSizeDistribution::read(path);
+    auto psd = [&] {
+      try {
+        return ParticleSizeDistribution::read(path);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "pack_range: %s\n", e.what());
+        std::exit(2);
+      }
+    }();
     auto intervals = psd.equal_mass_intervals(20);
     for (Arrangement a : rules) {
       Summary sm;
