@@ -8,10 +8,11 @@
 // microseconds per particle (placed), the packer's peak data per placed
 // particle, the achieved porosity and the porosity of the container packed
 // full (1 - packed_volume / V, vacancies included), the lowest porosity the
-// packing reaches in that container. `seconds` is wall time, `cpu_s` the
-// process's CPU time; the rates are from CPU time, so that other jobs on the
-// machine slow them less (the packer is serial, so on an idle machine the
-// two agree).
+// packing reaches in that container, and the sites opened and grains offered
+// to a site per grain placed (sites/p, tries/p: the work, in counts).
+// `seconds` is wall time, `cpu_s` the process's CPU time; the rates are
+// from CPU time, so that other jobs on the machine slow them less (the
+// packer is serial, so on an idle machine the two agree).
 #include <sys/resource.h>
 
 #include <chrono>
@@ -30,11 +31,7 @@ using namespace fabric;
 int main(int argc, char** argv) {
   std::string path = argc > 1 ? argv[1] : "input_scripts/psd/cu2.5.txt";
   double max_n = argc > 2 ? std::atof(argv[2]) : 1e6;
-  if (!(max_n >= 1e4)) {
-    std::fprintf(stderr, "usage: pack_bench [psd-file] [max-N >= 1e4]\n");
-    return 2;
-  }
-  if (path.rfind("-", 0) == 0) {
+  if (!(max_n >= 1e4) || path.rfind("-", 0) == 0) {
     std::fprintf(stderr, "usage: pack_bench [psd-file] [max-N >= 1e4]\n");
     return 2;
   }
