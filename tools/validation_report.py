@@ -2,12 +2,14 @@
 """Tables and figures of docs/validation.md from the runs of
 tools/oedometer_study.py, beside the paper's numbers.
 
-    /usr/bin/python3 tools/validation_report.py [--study out/study]
+    /usr/bin/python3 tools/validation_report.py [--study out/study [DIR ...]]
         [--side 3.3] [--out docs/validation] [--size CSV ...] [--page docs/validation.md]
 
 Reads STUDY/study.csv (one row per run) and each run's folder
 STUDY/runs/NAME (fabric_global.txt: r1, r2 and their tolerant versions;
-fabric_series.txt, fabric_intervals.txt: the figures). Writes into OUT:
+fabric_series.txt, fabric_intervals.txt: the figures); several --study
+folders are read together (runs of one matrix made by several calls of the
+driver; a run name found twice is an error). Writes into OUT:
 
   study.csv          the rows used (rank count 1 at the chosen side), as read
   tables.md          per model (rule x Cu): seeds, primary % by mass and
@@ -29,13 +31,14 @@ the summary figure of those rows (S: their side). With --matrix and no
 page's matrix block with --page), e.g. from the side-5.5 CSVs kept in
 docs/validation. --label L names a second matrix (runs with other scene
 settings, e.g. one stiffness number): OUT/tables_sideS_L.md,
-OUT/summary_sideS_L.png and the page block <!-- matrix-L -->.
+OUT/summary_sideS_L.png and the page block <!-- matrix-L --> (with --study,
+the other blocks too: <!-- tables-L --> and so on).
 
 With --size, tables.md also gets the size study: Cu 2.5 DA per side, from
 the given CSVs of tools/oedometer_study.py (e.g. out/study/study.csv and
 the --convergence runs' CSV). With --page, the tables also replace the
 blocks between <!-- tables -->, <!-- ranks -->, <!-- size -->,
-<!-- matrix --> and their
+<!-- matrix --> (each with -L added under --label L) and their
 closing markers in that page (docs/validation.md). Prints the tables. Exit status 2 when the CSV holds no row at the side.
 """
 import argparse
@@ -150,8 +153,8 @@ def matrix_table(paths, label=""):
 
 
 def fill_page(page, text, label=""):
-    """Put the tables of tables.md into the marked blocks of the page (the
-    matrix into <!-- matrix-LABEL --> when a label is given)."""
+    """Put the tables of tables.md into the marked blocks of the page (into
+    <!-- NAME-LABEL --> when a label is given: <!-- matrix-LABEL --> ...)."""
     import re
     blocks = {}
     if "\nTable 2 beside ours" in text:
@@ -165,8 +168,9 @@ def fill_page(page, text, label=""):
     if "Size study" in text:
         blocks["size"] = text.split("1 MPI rank:\n", 1)[1].split("\nThe eight models at")[0].strip()
     if "The eight models at" in text:
-        blocks["matrix-" + label if label else "matrix"] = (
-            text.split("(rows of several studies):\n", 1)[1].strip())
+        blocks["matrix"] = text.split("(rows of several studies):\n", 1)[1].strip()
+    if label:
+        blocks = {name + "-" + label: table for name, table in blocks.items()}
     body = open(page).read()
     for name, table in blocks.items():
         body = re.sub(r"<!-- %s -->.*?<!-- /%s -->" % (re.escape(name), re.escape(name)),
@@ -223,7 +227,7 @@ def plot_summary(summary, side, path, label=""):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--study")
+    ap.add_argument("--study", nargs="+", metavar="DIR")
     ap.add_argument("--side", default="3.3")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
     ap.add_argument("--size", nargs="*", default=[], metavar="CSV")
@@ -252,20 +256,29 @@ def main():
                      a.label)
         return 0
     if a.study is None:
-        a.study = os.path.join(ROOT, "out", "study")
-    rows = oedometer_runs.read_rows(os.path.join(a.study, "study.csv"))
+        a.study = [os.path.join(ROOT, "out", "study")]
+    rows, home = [], {}  # home: run name -> its folder
+    for study in a.study:
+        for r in oedometer_runs.read_rows(os.path.join(study, "study.csv")):
+            if r["name"] in home:
+                sys.stderr.write("run %s is in both %s and %s; give each run once\n"
+                                 % (r["name"], os.path.dirname(os.path.dirname(home[r["name"]])),
+                                    study))
+                return 2
+            home[r["name"]] = os.path.join(study, "runs", r["name"])
+            rows.append(r)
     ranks_rows = [r for r in rows if r["side"] == a.side]
     rows = [r for r in ranks_rows if r.get("ranks", "1") in ("", "1")]
     if not rows:
-        sys.stderr.write("no run at side %s in %s/study.csv\n" % (a.side, a.study))
+        sys.stderr.write("no run at side %s in %s\n"
+                         % (a.side, ", ".join(os.path.join(d, "study.csv") for d in a.study)))
         return 2
     os.makedirs(a.out, exist_ok=True)
     fields = list(rows[0].keys()) + ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm",
                                      "r2_tolerant_mm"]
     for r in ranks_rows:
-        r1, r2, t1, t2 = radii(os.path.join(a.study, "runs", r["name"]))
-        r["loose_before_pct"] = "%.2f" % loose_before_loading(
-            os.path.join(a.study, "runs", r["name"]))
+        r1, r2, t1, t2 = radii(home[r["name"]])
+        r["loose_before_pct"] = "%.2f" % loose_before_loading(home[r["name"]])
         r.update({"r1_mm": "%.4f" % r1, "r2_mm": "%.4f" % r2,
                   "r1_tolerant_mm": "%.4f" % t1, "r2_tolerant_mm": "%.4f" % t2})
     with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
@@ -365,10 +378,10 @@ def main():
         dirs, labels = [], []
         for soil in SOILS:
             got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil
-                          and os.path.isdir(os.path.join(a.study, "runs", x["name"]))),
+                          and os.path.isdir(home[x["name"]])),
                          key=lambda x: int(x["seed"]))
             if got:
-                dirs.append(os.path.join(a.study, "runs", got[0]["name"]))
+                dirs.append(home[got[0]["name"]])
                 labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
         if not dirs:
             continue

@@ -28,7 +28,7 @@ the scene or the compute shows:
 9. tools/validation_report.py turns the runs into the validation page's
    tables (a row per model, Table 2 beside the paper's) and figures; with
    --matrix and --label a second matrix goes to files and a page block of
-   its own.
+   its own; the runs split over two --study folders give the same tables.
 10. tools/fabric_layers.py cuts every run's final state into layers by
    height: they hold every grain once and all of the mass, and the whole
    specimen's primary share is the CSV row's.
@@ -162,6 +162,51 @@ def main():
               and os.path.exists(os.path.join(report, "tables_side3.3_k1.md"))
               and os.path.exists(os.path.join(report, "summary_side3.3_k1.png")),
               p5.stdout[-1500:] + p5.stderr[-1500:] + body[:1500])
+    # Several --study folders: the runs split by rule over two folders (as
+    # two calls of the driver leave them) give the tables of the one folder;
+    # with --label and --page the tables go to the labelled blocks; a run
+    # given twice is refused.
+    halves = []
+    for rule in ("discrete", "layerwise"):
+        d = os.path.join(args.work, "split_" + rule)
+        os.makedirs(os.path.join(d, "runs"), exist_ok=True)
+        mine = [r for r in rows if r["rule"] == rule]
+        with open(os.path.join(args.work, "study.csv")) as f:
+            fields = next(csv.reader(f))
+        with open(os.path.join(d, "study.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields)
+            w.writeheader()
+            w.writerows(mine)
+        for r in mine:
+            link = os.path.join(d, "runs", r["name"])
+            if not os.path.lexists(link):
+                os.symlink(os.path.join(args.work, "runs", r["name"]), link)
+        halves.append(d)
+    page2 = os.path.join(args.work, "page2.md")
+    open(page2, "w").write("<!-- tables -->\nkept\n<!-- /tables -->\n"
+                           "<!-- tables-k2 -->\nold\n<!-- /tables-k2 -->\n")
+    report2 = os.path.join(args.work, "report2")
+    p6 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study"] + halves + ["--side", "3.3", "--out", report2,
+                                                "--label", "k2", "--page", page2],
+                        cwd=args.source, capture_output=True, text=True, timeout=600)
+    tables2 = open(os.path.join(report2, "tables.md")).read() if p6.returncode == 0 else ""
+    body2 = open(page2).read()
+    chk.check("validation_report --study A B: the tables of the one folder, "
+              "the page's tables-k2 block filled, the tables block kept",
+              p6.returncode == 0 and tables2.split("\n\nThe eight models")[0].strip()
+              == tables.split("\n\nThe eight models")[0].strip()
+              and "kept" in body2 and "old" not in body2
+              and all("| %s |" % m in body2 for m in want)
+              and os.path.exists(os.path.join(report2, "DA", "fig12_primary_mass.png")),
+              p6.stdout[-1500:] + p6.stderr[-1500:] + body2[:1500])
+    p7 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study", args.work, halves[0], "--side", "3.3",
+                         "--out", os.path.join(args.work, "report3")],
+                        cwd=args.source, capture_output=True, text=True, timeout=300)
+    chk.check("validation_report --study with a run in two folders: exit 2 naming it (%s)"
+              % p7.stderr.strip()[:200],
+              p7.returncode == 2 and "in both" in p7.stderr)
     # tools/fabric_layers.py on every run: the layers from the floor to
     # the top hold every grain once and all of the mass, and the whole
     # specimen's primary share is the CSV row's.
