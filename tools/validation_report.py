@@ -257,16 +257,18 @@ def main():
         return 0
     if a.study is None:
         a.study = [os.path.join(ROOT, "out", "study")]
-    rows, home = [], {}  # home: run name -> its folder
+    rows, home = [], {}  # home: run name -> the study folder that holds it
     for study in a.study:
         for r in oedometer_runs.read_rows(os.path.join(study, "study.csv")):
             if r["name"] in home:
                 sys.stderr.write("run %s is in both %s and %s; give each run once\n"
-                                 % (r["name"], os.path.dirname(os.path.dirname(home[r["name"]])),
-                                    study))
+                                 % (r["name"], home[r["name"]], study))
                 return 2
-            home[r["name"]] = os.path.join(study, "runs", r["name"])
+            home[r["name"]] = study
             rows.append(r)
+
+    def rundir(name):
+        return os.path.join(home[name], "runs", name)
     ranks_rows = [r for r in rows if r["side"] == a.side]
     rows = [r for r in ranks_rows if r.get("ranks", "1") in ("", "1")]
     if not rows:
@@ -277,8 +279,8 @@ def main():
     fields = list(rows[0].keys()) + ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm",
                                      "r2_tolerant_mm"]
     for r in ranks_rows:
-        r1, r2, t1, t2 = radii(home[r["name"]])
-        r["loose_before_pct"] = "%.2f" % loose_before_loading(home[r["name"]])
+        r1, r2, t1, t2 = radii(rundir(r["name"]))
+        r["loose_before_pct"] = "%.2f" % loose_before_loading(rundir(r["name"]))
         r.update({"r1_mm": "%.4f" % r1, "r2_mm": "%.4f" % r2,
                   "r1_tolerant_mm": "%.4f" % t1, "r2_tolerant_mm": "%.4f" % t2})
     with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
@@ -378,10 +380,10 @@ def main():
         dirs, labels = [], []
         for soil in SOILS:
             got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil
-                          and os.path.isdir(home[x["name"]])),
+                          and os.path.isdir(rundir(x["name"]))),
                          key=lambda x: int(x["seed"]))
             if got:
-                dirs.append(home[got[0]["name"]])
+                dirs.append(rundir(got[0]["name"]))
                 labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
         if not dirs:
             continue
