@@ -16,7 +16,10 @@ driver; a run name found twice is an error). Writes into OUT:
                      loose % by number (mean and range over the seeds), the
                      OZ as Table 2 gives it (r1, r2 in mm, OZ %), the
                      tolerant OZ, a_c, a_n, wall time; the paper's Table 2
-                     beside it; and the rank-count rows (--ranks runs)
+                     beside it; each step in Cu split into the mass
+                     shift and the change at equal diameter (from
+                     fabric_intervals.txt); and the rank-count rows
+                     (--ranks runs)
   summary.png        primary % by mass, loose % by number and OZ % against
                      Cu, DA and LA, a bar for the seeds' range, the paper's
                      Table 2 OZ and its 40-90 % band for the primary mass
@@ -48,9 +51,12 @@ import shutil
 import subprocess
 import sys
 
+import numpy as np
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import oedometer_runs  # noqa: E402
+import plot_fabric  # noqa: E402
 
 SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
 RULES = [("layerwise", "LA"), ("discrete", "DA")]
@@ -102,8 +108,70 @@ def fmt(s, digits=1):
     return "%.*f (%.*f-%.*f)" % (digits, mean, digits, lo, digits, hi)
 
 
+def fmt_signed(s):
+    """A change: signed mean, and the range as 'lo to hi'."""
+    mean, lo, hi = s
+    if lo == hi:
+        return "%+.1f" % mean
+    return "%+.1f (%+.1f to %+.1f)" % (mean, lo, hi)
+
+
 def col(got, key):
     return [float(x[key]) for x in got if x.get(key, "") not in ("", None)]
+
+
+def interval_primary(rundir):
+    """(diameters, mass % per interval, primary % of each interval's mass)
+    from the last block of the run's fabric_intervals.txt, empty intervals
+    left out."""
+    iv = plot_fabric.read_intervals(os.path.join(rundir, "fabric_intervals.txt"))
+    lab = plot_fabric.ARRAY_LABELS
+    d, m, q = (iv[lab[k]] for k in ("diameter", "mass_percent", "primary_percent_of_interval"))
+    held = (m > 0) & (d > 0)
+    return d[held], m[held], q[held]
+
+
+def cu_step_split(rows, rundir):
+    """Table lines: per rule, each step from one soil to the next wider one
+    (seeds run for both), the change of the primary % by mass split in two:
+    the mass shift (the wider soil's interval masses with the narrower
+    soil's primary share at the same diameter, interpolated in log d and
+    held at its end values, minus the narrower soil's primary %) and the
+    change at equal diameter (the rest)."""
+    lines = ["", "The step in Cu split (seeds run for both soils; mass shift: the wider soil's "
+             "interval masses with the narrower soil's primary share at the same diameter; "
+             "equal diameter: the rest):\n",
+             "| rule | Cu | seeds | primary % by mass | change | mass shift | at equal diameter |",
+             "|---|---|---|---|---|---|---|"]
+    for rule, tag in RULES:
+        for a, b in zip(SOILS, SOILS[1:]):
+            runs = {}
+            for soil in (a, b):
+                runs[soil] = {x["seed"]: rundir(x["name"]) for x in rows
+                              if x["rule"] == rule and x["soil"] == soil
+                              and os.path.exists(os.path.join(rundir(x["name"]),
+                                                              "fabric_intervals.txt"))}
+            seeds = sorted(set(runs[a]) & set(runs[b]), key=int)
+            if not seeds:
+                continue
+            pa, pb, shift, equal = [], [], [], []
+            for seed in seeds:
+                da, ma, qa = interval_primary(runs[a][seed])
+                db, mb, qb = interval_primary(runs[b][seed])
+                ta = (ma * qa).sum() / ma.sum()
+                tb = (mb * qb).sum() / mb.sum()
+                order = np.argsort(da)
+                moved = (mb * np.interp(np.log(db), np.log(da[order]), qa[order])).sum() / mb.sum()
+                pa.append(ta)
+                pb.append(tb)
+                shift.append(moved - ta)
+                equal.append(tb - moved)
+            change = [y - x for x, y in zip(pa, pb)]
+            lines.append("| %s | %s to %s | %s | %s to %s | %s | %s | %s |"
+                         % (tag, a[2:], b[2:], ", ".join(seeds), fmt(stats(pa)), fmt(stats(pb)),
+                            fmt_signed(stats(change)), fmt_signed(stats(shift)),
+                            fmt_signed(stats(equal))))
+    return lines if len(lines) > 4 else []
 
 
 def matrix_table(paths, label=""):
@@ -321,6 +389,7 @@ def main():
                           % (model, fmt(s["r1_mm"], 3), p1, fmt(s["r2_mm"], 3), p2,
                              fmt(s["oz_mass_pct"]), poz, fmt(s["oz_tolerant_mass_pct"])))
     lines += table2
+    lines += cu_step_split(rows, rundir)
     multi = [x for x in ranks_rows if x.get("ranks", "1") not in ("", "1")]
     if multi:
         lines += ["", "Rank count (the same model and seed on more MPI ranks):\n",

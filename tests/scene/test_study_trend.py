@@ -13,6 +13,13 @@ models at one stiffness number):
    than Cu 2.5 (measured: 61.3 against 56.0 %; seeds 1-3 61.3-64.8 against
    56.0-57.0; half the time step, seeds 1-3: 56.1-68.3 against 53.4-54.3).
 4. Both lie inside the paper's 40-90 % of the mass.
+5. tools/validation_report.py splits the step from Cu 2.0 to 2.5 into the
+   mass shift (Cu 2.5's interval masses with Cu 2.0's primary share at the
+   same diameter) and the change at equal diameter: the two add up to the
+   CSV rows' difference, the wider soil holds less primary at equal
+   diameter (by at least 5 points; measured -13.3, seeds 1-3 -13.3 to
+   -15.1) and its coarser mass adds at least 3 (measured +8.0, seeds 1-3
+   +7.2 to +8.0).
 
 At the default's fixed K_n the primary fraction rises with Cu instead
 (the wider soil's coarse grains are strained more), and at side 3.3 the
@@ -56,6 +63,22 @@ def main():
         a, b = float(rows["cu2.0"]["primary_mass_pct"]), float(rows["cu2.5"]["primary_mass_pct"])
         chk.check("the smaller Cu, the more primary mass: Cu 2.0 %.2f %% >= Cu 2.5 %.2f %% + 1"
                   % (a, b), a >= b + 1)
+        report = os.path.join(args.work, "report")
+        p2 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                             "--study", args.work, "--side", "5.5", "--out", report],
+                            cwd=args.source, capture_output=True, text=True, timeout=300)
+        print(p2.stderr[-2000:])
+        signed = r"([+-][0-9.]+)"
+        m = re.search(r"\| DA \| 2\.0 to 2\.5 \| 1 \| [0-9.]+ to [0-9.]+ \| %s \| %s \| %s \|"
+                      % (signed, signed, signed), p2.stdout)
+        change, shift, equal = (float(x) for x in m.groups()) if m else (float("nan"),) * 3
+        chk.check("validation_report splits Cu 2.0 to 2.5: change %+.1f = shift %+.1f + equal "
+                  "diameter %+.1f, the CSV's %+.2f (%s)"
+                  % (change, shift, equal, b - a, m.group(0) if m else "no split row"),
+                  m is not None and abs(change - (b - a)) <= 0.1
+                  and abs(shift + equal - change) <= 0.15)
+        chk.check("at equal diameter Cu 2.5 holds less primary (%+.1f <= -5), its coarser mass "
+                  "adds (%+.1f >= +3)" % (equal, shift), equal <= -5 and shift >= 3)
     return chk.finish()
 
 
