@@ -156,8 +156,12 @@ def cu_step_split(rows, rundir):
                 continue
             pa, pb, shift, equal = [], [], [], []
             for seed in seeds:
-                da, ma, qa = interval_primary(runs[a][seed])
-                db, mb, qb = interval_primary(runs[b][seed])
+                try:
+                    da, ma, qa = interval_primary(runs[a][seed])
+                    db, mb, qb = interval_primary(runs[b][seed])
+                except plot_fabric.InputError as e:
+                    sys.stderr.write("step in Cu split: seed %s left out: %s\n" % (seed, e))
+                    continue
                 ta = (ma * qa).sum() / ma.sum()
                 tb = (mb * qb).sum() / mb.sum()
                 order = np.argsort(da)
@@ -166,6 +170,8 @@ def cu_step_split(rows, rundir):
                 pb.append(tb)
                 shift.append(moved - ta)
                 equal.append(tb - moved)
+            if not pa:
+                continue
             change = [y - x for x, y in zip(pa, pb)]
             lines.append("| %s | %s to %s | %s | %s to %s | %s | %s | %s |"
                          % (tag, a[2:], b[2:], ", ".join(seeds), fmt(stats(pa)), fmt(stats(pb)),
@@ -458,8 +464,10 @@ def main():
             continue
         png = os.path.join(a.out, tag)
         shutil.rmtree(png, ignore_errors=True)
-        subprocess.check_call(["/usr/bin/python3", os.path.join(ROOT, "tools", "plot_fabric.py")]
-                              + dirs + ["--labels"] + labels + ["--png-dir", png])
+        if subprocess.call(["/usr/bin/python3", os.path.join(ROOT, "tools", "plot_fabric.py")]
+                           + dirs + ["--labels"] + labels + ["--png-dir", png]) != 0:
+            sys.stderr.write("the %s figures were not drawn (plot_fabric.py's message above)\n" % tag)
+            return 2
     return 0
 
 
