@@ -23,8 +23,19 @@ driver; a run name found twice is an error). Writes into OUT:
   summary.png        primary % by mass, loose % by number and OZ % against
                      Cu, DA and LA, a bar for the seeds' range, the paper's
                      Table 2 OZ and its 40-90 % band for the primary mass
+  intervals.csv      the last interval table of each run (diameter, mass %,
+                     primary % of the interval's mass): the step in Cu
+                     split reads it
   DA/, LA/           the paper's Figs. 11-19 drawn by tools/plot_fabric.py
-                     from the seed-1 run of each Cu (one line per Cu)
+                     from the lowest seed's run of each Cu (one line per
+                     Cu); left as they are, with a message, when one of
+                     those run folders is gone
+
+A run folder may be gone (they hold the VTK dumps: 35 MB per run of Cu 3.5
+at side 7.7) once a report has read it: a run of the study CSVs without its
+folder takes its step-0 count, r1, r2 and interval table from OUT/study.csv
+and OUT/intervals.csv as the earlier report into the same OUT wrote them
+(e.g. a seed added later: the report needs the new run's folder only).
 
 With --matrix, tables.md also gets the eight models at one side from the
 rows of several study CSVs (any rank count: the rank count acts as a seed),
@@ -131,7 +142,28 @@ def interval_primary(rundir):
     return d[held], m[held], q[held]
 
 
-def cu_step_split(rows, rundir):
+def kept_digest(out):
+    """What an earlier report into OUT kept of each run: (rows of
+    OUT/study.csv by name, interval tables of OUT/intervals.csv by name as
+    (diameters, mass %, primary % of the interval))."""
+    rows = {r["name"]: r for r in oedometer_runs.read_rows(os.path.join(out, "study.csv"))}
+    tables = {}
+    for r in oedometer_runs.read_rows(os.path.join(out, "intervals.csv")):
+        tables.setdefault(r["name"], []).append(
+            (float(r["diameter_m"]), float(r["mass_pct"]), float(r["primary_pct_of_interval"])))
+    return rows, {n: tuple(np.array(c) for c in zip(*v)) for n, v in tables.items()}
+
+
+def write_intervals(path, tables):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["name", "diameter_m", "mass_pct", "primary_pct_of_interval"])
+        for name in sorted(tables):
+            for d, m, q in zip(*tables[name]):
+                w.writerow([name, "%.10g" % d, "%.10g" % m, "%.10g" % q])
+
+
+def cu_step_split(rows, tables):
     """Table lines: per rule, each step from one soil to the next wider one
     (seeds run for both), the change of the primary % by mass split in two:
     the mass shift (the wider soil's interval masses with the narrower
@@ -147,21 +179,15 @@ def cu_step_split(rows, rundir):
         for a, b in zip(SOILS, SOILS[1:]):
             runs = {}
             for soil in (a, b):
-                runs[soil] = {x["seed"]: rundir(x["name"]) for x in rows
-                              if x["rule"] == rule and x["soil"] == soil
-                              and os.path.exists(os.path.join(rundir(x["name"]),
-                                                              "fabric_intervals.txt"))}
+                runs[soil] = {x["seed"]: tables[x["name"]] for x in rows
+                              if x["rule"] == rule and x["soil"] == soil and x["name"] in tables}
             seeds = sorted(set(runs[a]) & set(runs[b]), key=int)
             if not seeds:
                 continue
             pa, pb, shift, equal = [], [], [], []
             for seed in seeds:
-                try:
-                    da, ma, qa = interval_primary(runs[a][seed])
-                    db, mb, qb = interval_primary(runs[b][seed])
-                except plot_fabric.InputError as e:
-                    sys.stderr.write("step in Cu split: seed %s left out: %s\n" % (seed, e))
-                    continue
+                da, ma, qa = runs[a][seed]
+                db, mb, qb = runs[b][seed]
                 ta = (ma * qa).sum() / ma.sum()
                 tb = (mb * qb).sum() / mb.sum()
                 order = np.argsort(da)
@@ -170,8 +196,6 @@ def cu_step_split(rows, rundir):
                 pb.append(tb)
                 shift.append(moved - ta)
                 equal.append(tb - moved)
-            if not pa:
-                continue
             change = [y - x for x, y in zip(pa, pb)]
             lines.append("| %s | %s to %s | %s | %s to %s | %s | %s | %s |"
                          % (tag, a[2:], b[2:], ", ".join(seeds), fmt(stats(pa)), fmt(stats(pb)),
@@ -350,17 +374,36 @@ def main():
                          % (a.side, ", ".join(os.path.join(d, "study.csv") for d in a.study)))
         return 2
     os.makedirs(a.out, exist_ok=True)
-    fields = list(rows[0].keys()) + ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm",
-                                     "r2_tolerant_mm"]
+    derived = ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm", "r2_tolerant_mm"]
+    fields = [k for k in rows[0].keys() if k not in derived] + derived
+    kept_rows, kept_tables = kept_digest(a.out)
+    tables, gone = {}, []  # tables: run name -> its interval table
     for r in ranks_rows:
-        r1, r2, t1, t2 = radii(rundir(r["name"]))
-        r["loose_before_pct"] = "%.2f" % loose_before_loading(rundir(r["name"]))
+        name = r["name"]
+        if not os.path.isdir(rundir(name)) and name in kept_rows:
+            # the folder is gone: what an earlier report read from it
+            gone.append(name)
+            r.update({k: kept_rows[name].get(k, "nan") for k in derived})
+            if name in kept_tables:
+                tables[name] = kept_tables[name]
+            continue
+        r1, r2, t1, t2 = radii(rundir(name))
+        r["loose_before_pct"] = "%.2f" % loose_before_loading(rundir(name))
         r.update({"r1_mm": "%.4f" % r1, "r2_mm": "%.4f" % r2,
                   "r1_tolerant_mm": "%.4f" % t1, "r2_tolerant_mm": "%.4f" % t2})
+        if os.path.exists(os.path.join(rundir(name), "fabric_intervals.txt")):
+            try:
+                tables[name] = interval_primary(rundir(name))
+            except plot_fabric.InputError as e:
+                sys.stderr.write("step in Cu split: %s left out: %s\n" % (name, e))
+    if gone:
+        sys.stderr.write("%d runs without their folder, read from %s (study.csv, intervals.csv): %s\n"
+                         % (len(gone), a.out, ", ".join(sorted(gone))))
     with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         w.writerows(sorted(ranks_rows, key=lambda r: r["name"]))
+    write_intervals(os.path.join(a.out, "intervals.csv"), tables)
 
     lines = ["Side %s coarsest diameters, 1 MPI rank; mean (range) over the seeds.\n" % a.side,
              "| model | grains | seeds (at rest) | loose % before loading | primary % by mass "
@@ -395,7 +438,7 @@ def main():
                           % (model, fmt(s["r1_mm"], 3), p1, fmt(s["r2_mm"], 3), p2,
                              fmt(s["oz_mass_pct"]), poz, fmt(s["oz_tolerant_mass_pct"])))
     lines += table2
-    lines += cu_step_split(rows, rundir)
+    lines += cu_step_split(rows, tables)
     multi = [x for x in ranks_rows if x.get("ranks", "1") not in ("", "1")]
     if multi:
         lines += ["", "Rank count (the same model and seed on more MPI ranks):\n",
@@ -454,12 +497,16 @@ def main():
     for rule, tag in RULES:
         dirs, labels = [], []
         for soil in SOILS:
-            got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil
-                          and os.path.isdir(rundir(x["name"]))),
+            got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil),
                          key=lambda x: int(x["seed"]))
             if got:
                 dirs.append(rundir(got[0]["name"]))
                 labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
+        missing = [d for d in dirs if not os.path.isdir(d)]
+        if missing:
+            sys.stderr.write("the %s figures are left as they are (run folders gone: %s)\n"
+                             % (tag, ", ".join(missing)))
+            continue
         if not dirs:
             continue
         png = os.path.join(a.out, tag)
