@@ -127,6 +127,11 @@ def fmt_signed(s):
     return "%+.1f (%+.1f to %+.1f)" % (mean, lo, hi)
 
 
+def cell(v, digits):
+    """A CSV cell: the value, or empty when it is not known (NaN)."""
+    return "" if v != v else "%.*f" % (digits, v)
+
+
 def col(got, key):
     return [float(x[key]) for x in got if x.get(key, "") not in ("", None)]
 
@@ -383,14 +388,15 @@ def main():
         if not os.path.isdir(rundir(name)) and name in kept_rows:
             # the folder is gone: what an earlier report read from it
             gone.append(name)
-            r.update({k: kept_rows[name].get(k, "nan") for k in derived})
+            r.update({k: kept_rows[name].get(k, "") for k in derived})
             if name in kept_tables:
                 tables[name] = kept_tables[name]
             continue
         r1, r2, t1, t2 = radii(rundir(name))
-        r["loose_before_pct"] = "%.2f" % loose_before_loading(rundir(name))
-        r.update({"r1_mm": "%.4f" % r1, "r2_mm": "%.4f" % r2,
-                  "r1_tolerant_mm": "%.4f" % t1, "r2_tolerant_mm": "%.4f" % t2})
+        # a value the folder does not hold is left empty, not written as nan
+        r["loose_before_pct"] = cell(loose_before_loading(rundir(name)), 2)
+        r.update({"r1_mm": cell(r1, 4), "r2_mm": cell(r2, 4),
+                  "r1_tolerant_mm": cell(t1, 4), "r2_tolerant_mm": cell(t2, 4)})
         if os.path.exists(os.path.join(rundir(name), "fabric_intervals.txt")):
             try:
                 tables[name] = interval_primary(rundir(name))
