@@ -28,8 +28,8 @@ driver; a run name found twice is an error). Writes into OUT:
                      split reads it
   DA/, LA/           the paper's Figs. 11-19 drawn by tools/plot_fabric.py
                      from the lowest seed's run of each Cu (one line per
-                     Cu); left as they are, with a message, when one of
-                     those run folders is gone
+                     Cu); not drawn, with a message, when one of those
+                     run folders is gone (the figures already in OUT stay)
 
 A run folder may be gone (they hold the VTK dumps: 35 MB per run of Cu 3.5
 at side 7.7) once a report has read it: a run of the study CSVs without its
@@ -382,13 +382,13 @@ def main():
     derived = ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm", "r2_tolerant_mm"]
     fields = [k for k in rows[0].keys() if k not in derived] + derived
     kept_rows, kept_tables = kept_digest(a.out)
-    tables, gone = {}, []  # tables: run name -> its interval table
+    tables, gone, lost = {}, [], []  # tables: run name -> its interval table
     for r in ranks_rows:
         name = r["name"]
-        if not os.path.isdir(rundir(name)) and name in kept_rows:
-            # the folder is gone: what an earlier report read from it
-            gone.append(name)
-            r.update({k: kept_rows[name].get(k, "") for k in derived})
+        if not os.path.isdir(rundir(name)):
+            # the folder is gone: what an earlier report read from it, if any
+            (gone if name in kept_rows else lost).append(name)
+            r.update({k: kept_rows.get(name, {}).get(k, "") for k in derived})
             if name in kept_tables:
                 tables[name] = kept_tables[name]
             continue
@@ -405,6 +405,10 @@ def main():
     if gone:
         sys.stderr.write("%d runs without their folder, read from %s (study.csv, intervals.csv): %s\n"
                          % (len(gone), a.out, ", ".join(sorted(gone))))
+    if lost:
+        sys.stderr.write("%d runs without their folder and not kept in %s: their step-0 count, "
+                         "r1, r2 and Cu split are left out: %s\n"
+                         % (len(lost), a.out, ", ".join(sorted(lost))))
     with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
@@ -510,8 +514,8 @@ def main():
                 labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
         missing = [d for d in dirs if not os.path.isdir(d)]
         if missing:
-            sys.stderr.write("the %s figures are left as they are (run folders gone: %s)\n"
-                             % (tag, ", ".join(missing)))
+            sys.stderr.write("the %s figures are not drawn (run folders gone: %s); those "
+                             "already in %s are kept\n" % (tag, ", ".join(missing), a.out))
             continue
         if not dirs:
             continue
