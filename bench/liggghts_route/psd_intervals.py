@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Equal-mass intervals of a PSD file, computed exactly as fix sequential/pack
-does (fix_sequential_pack/psd.cpp): interval k holds the mass between
+does (core/psd.cpp): interval k holds the mass between
 100(k-1)/N and 100k/N percent passing, represented by its mass-weighted mean
 diameter (percentage linear in log d between sieve points); count_k =
 round(m_k (1-n) V / (pi/6 d_k^3)).

@@ -1,4 +1,4 @@
-// Unit tests of the PSD value type (fix_sequential_pack/psd.*).
+// Unit tests of the PSD value type (core/psd.*).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Unit tests of Eq. (1), Eq. (2) and the fallback placements
-// (fix_sequential_pack/trilateration.*).
+// (core/trilateration.*).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
