@@ -12,6 +12,7 @@
 #include <cstring>
 #include <numeric>
 #include <set>
+#include <utility>
 #include <stdexcept>
 
 #include "atom.h"
@@ -37,6 +38,16 @@ using namespace LAMMPS_NS;
 namespace {
 // The computes that warned about a non-finite state in this run (once each).
 std::set<const ComputePrimaryFabric *> warned_nonfinite;
+
+// Over all ranks: the sum of the counts and the largest of the examples.
+std::pair<long long, double> count_and_example(long long count, double example,
+                                               MPI_Comm world) {
+  long long all = 0;
+  MPI_Allreduce(&count, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  double max = 0.0;
+  MPI_Allreduce(&example, &max, 1, MPI_DOUBLE, MPI_MAX, world);
+  return {all, max};
+}
 }  // namespace
 
 ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
@@ -414,11 +425,8 @@ void ComputePrimaryFabric::collect_particles(Step &step) {
 }
 
 void ComputePrimaryFabric::stop_on_bad_index(long long count, double value) {
-  long long all = 0;
-  MPI_Allreduce(&count, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  const auto [all, v] = count_and_example(count, value, world);
   if (all == 0) return;
-  double v = 0.0;
-  MPI_Allreduce(&value, &v, 1, MPI_DOUBLE, MPI_MAX, world);
   char m[512];
   snprintf(m, sizeof m,
            "Compute primary/fabric: %lld particles (e.g. index %g) carry an "
@@ -429,11 +437,8 @@ void ComputePrimaryFabric::stop_on_bad_index(long long count, double value) {
 }
 
 void ComputePrimaryFabric::stop_on_outside(long long count, double diameter) {
-  long long all = 0;
-  MPI_Allreduce(&count, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  const auto [all, d] = count_and_example(count, diameter, world);
   if (all == 0) return;
-  double d = 0.0;
-  MPI_Allreduce(&diameter, &d, 1, MPI_DOUBLE, MPI_MAX, world);
   const std::string of =
       !psd_file_.empty() ? psd_file_
       : interval_fix_    ? "the particles of fix " + intervals_from_ +

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "front_packer.h"
+#include "output_table.h"
 #include "psd.h"
 #include "specimen_measure.h"
 
@@ -33,18 +34,12 @@
 
 namespace fabric {
 
-#define PACK_ENUM_ENTRY(position, name, meaning) name,
-enum class PackEntry { PACK_VECTOR_ENTRIES(PACK_ENUM_ENTRY) count };
-#undef PACK_ENUM_ENTRY
-
+enum class PackEntry { PACK_VECTOR_ENTRIES(FABRIC_OUTPUT_NAME) count };
 constexpr int kPackVectorEntries = static_cast<int>(PackEntry::count);
 
-// The positions written in the table are the enumerators' order + 1.
-#define PACK_CHECK_ENTRY(position, name, meaning)                         \
-  static_assert(static_cast<int>(PackEntry::name) + 1 == position,        \
-                "pack_outputs.h: vector entry " #name " out of order");
-PACK_VECTOR_ENTRIES(PACK_CHECK_ENTRY)
-#undef PACK_CHECK_ENTRY
+constexpr int kPackPositions[] = {PACK_VECTOR_ENTRIES(FABRIC_OUTPUT_POSITION)};
+static_assert(counts_from_one(kPackPositions),
+              "pack_outputs.h: the positions must count 1, 2, 3 ... in order");
 
 // The global vector's values, one field per entry of the table, by its name.
 struct PackVector {

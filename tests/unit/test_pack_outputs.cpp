@@ -69,7 +69,7 @@ TEST(PackOutputs, PositionsTheToolsRead) {
   EXPECT_EQ(values[11], 22);
 }
 
-TEST(PackOutputs, ContactsOfAHandBuiltSpecimen) {
+TEST(PackOutputs, ContactsOfThreeHandPlacedGrains) {
   ThreeSpheres s;
   const PackReport r = s.report();
   ASSERT_EQ(fabric::kMinContacts, 3);
@@ -83,7 +83,7 @@ TEST(PackOutputs, ContactsOfAHandBuiltSpecimen) {
   EXPECT_EQ(r.not_placed, 0);
 }
 
-TEST(PackOutputs, PorositiesOfAHandBuiltSpecimen) {
+TEST(PackOutputs, PorositiesOfThreeHandPlacedGrains) {
   ThreeSpheres s;
   const PackReport r = s.report();
   const double solid = 3 * 4.0 / 3.0 * kPi;
@@ -114,7 +114,7 @@ TEST(PackOutputs, NoInteriorInANarrowContainer) {
   EXPECT_TRUE(std::isnan(r.vector.interior_size_assortativity));
 }
 
-TEST(PackOutputs, NoWarningForASpecimenAsAsked) {
+TEST(PackOutputs, NoWarningWhenAsAsked) {
   ThreeSpheres s;
   const PackReport r = s.report();
   EXPECT_TRUE(fabric::pack_warnings(r, s.res, s.list, r.vector.porosity,
@@ -150,7 +150,7 @@ TEST(PackOutputs, WarnsOfGrainsNotPlaced) {
         << "target " << target;
 }
 
-TEST(PackOutputs, WarnsOfALayerwiseSpecimenThatIsNotLayered) {
+TEST(PackOutputs, WarnsOfALayerwisePackingThatIsNotLayered) {
   ThreeSpheres s;
   PackReport r = s.report();
   const double target = r.vector.porosity;
