@@ -24,9 +24,9 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "min_contacts.h"
+#include "neighbour_count.h"
 #include "pack_outputs.h"
 #include "region.h"
-#include "sphere_grid.h"
 #include "style_args.h"
 
 using namespace LAMMPS_NS;
@@ -427,62 +427,21 @@ void FixSequentialPack::create_atoms(const fabric::PackingResult &res) {
 }
 
 void FixSequentialPack::check_neighbours(const fabric::PackingResult &res) {
-  const long long n = res.placed();
-  if (n < 2) return;
   const int one = neighbor->oneatom;
   const double skin = neighbor->skin;
   const double cdf = std::max(1.0, neighbor->contactDistanceFactor);
-  double rmax = 0.0, rmin = INFINITY;
-  for (double r : res.radius) rmax = std::max(rmax, r), rmin = std::min(rmin, r);
-  // LIGGGHTS lists j for grain i when |x_i - x_j| <= (r_i + r_j) cdf + skin
-  // (granular_bin_no_newton). A safe bound first: every such neighbour lies
-  // wholly inside the ball of radius (2 rmax) cdf + rmax + skin around the
-  // coarsest grain and holds at least a finest grain's volume.
-  const double reach_max = 2.0 * rmax * cdf + rmax + skin;
-  if (std::pow(reach_max / rmin, 3) <= one) return;
-
-  // The count from the specimen, for every grain of at least half the
-  // coarsest radius (the count grows with the grain's size). Per grain the
-  // gaps are kept to tell which skin the present 'one' allows.
-  std::vector<double> class_radius(list_.diameter.size());
-  for (size_t k = 0; k < class_radius.size(); ++k)
-    class_radius[k] = 0.5 * list_.diameter[k];
-  fabric::SphereGrid grid(fabric::Vec3(lo_[0], lo_[1], lo_[2]),
-                          fabric::Vec3(hi_[0], hi_[1], hi_[2]), class_radius,
-                          std::max<std::size_t>(1u << 16, res.centre.size()));
-  for (long long i = 0; i < n; ++i) grid.insert(res.centre[i], res.size_class[i]);
-  // With the skin that leaves the list a margin of 1.5 for compaction.
+  if (fabric::neighbours_surely_fit(res.radius, skin, cdf, one)) return;
+  // Per grain also the skin that leaves the list a margin of 1.5 for
+  // compaction with the present 'one'.
   const long long keep = std::max<long long>(1, static_cast<long long>(one / 1.5));
-  long long worst = 0;
-  double worst_d = 0.0, skin_ok = INFINITY;
-  std::vector<int> near;
-  std::vector<double> gap;
-  for (long long i = 0; i < n; ++i) {
-    const double ri = res.radius[i];
-    if (ri < 0.5 * rmax) continue;
-    near.clear();
-    gap.clear();
-    grid.within_gap(res.centre[i], ri,
-                    skin + (cdf - 1.0) * (ri + rmax) + 1e-12 * rmax, near);
-    for (int j : near) {
-      if (j == i) continue;
-      const fabric::Vec3 d = grid.centre(j) - res.centre[i];
-      // the skin that takes this neighbour into i's list
-      gap.push_back(std::sqrt(d.dot(d)) - (ri + grid.radius(j)) * cdf);
-    }
-    long long count = 0;
-    for (double g : gap) count += g <= skin;
-    if (count > worst) worst = count, worst_d = 2.0 * ri;
-    if (static_cast<long long>(gap.size()) > keep) {
-      std::nth_element(gap.begin(), gap.begin() + keep, gap.end());
-      skin_ok = std::min(skin_ok, gap[keep]);
-    }
-  }
-  if (worst <= one) return;
+  const fabric::NeighbourCount count = fabric::count_neighbours(
+      res, list_.diameter, container(), skin, cdf, keep);
+  if (count.most <= one) return;
   // Suggest a list that holds 1.5 times the count (compaction, rounding),
   // rounded up to hundreds; the page must hold 10 lists (Neighbor::init).
-  const long long need = (static_cast<long long>(1.5 * worst) + 99) / 100 * 100;
+  const long long need = (static_cast<long long>(1.5 * count.most) + 99) / 100 * 100;
   const long long page = std::max<long long>(neighbor->pgsize, 10 * need);
+  const double skin_ok = count.skin_for_keep;
   std::string skin_hint;
   if (std::isfinite(skin_ok) && skin_ok > 0.0 && skin_ok < skin)
     skin_hint = ", or keep 'one " + std::to_string(one) +
@@ -495,7 +454,7 @@ void FixSequentialPack::check_neighbours(const fabric::PackingResult &res) {
            "LIGGGHTS' neighbour list holds per grain (neigh_modify one %d, "
            "page %d); the run would stop with 'Neighbor list overflow'. Add "
            "'neigh_modify one %lld page %lld' before the run%s",
-           worst_d, worst, skin, one, neighbor->pgsize, need, page,
+           count.diameter, count.most, skin, one, neighbor->pgsize, need, page,
            skin_hint.c_str());
   error->all(FLERR, b);
 }
