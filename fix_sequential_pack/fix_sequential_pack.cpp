@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <set>
 #include <sstream>
@@ -21,9 +20,9 @@
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
+#include "min_contacts.h"
 #include "modify.h"
 #include "neighbor.h"
-#include "min_contacts.h"
 #include "neighbour_count.h"
 #include "pack_outputs.h"
 #include "region.h"
@@ -181,11 +180,13 @@ void FixSequentialPack::read_keywords(const StyleArgs &args) {
       args.unknown_keyword(i);
     }
   }
-  for (const char *required : {"psd FILE", "porosity P",
-                               "arrangement discrete|layerwise", "region ID",
-                               "seed N"})
-    if (!given.count(std::string(required, strcspn(required, " "))))
-      args.fail("keyword '" + std::string(required) + "' is required");
+  static const char *const required[][2] = {
+      {"psd", "psd FILE"}, {"porosity", "porosity P"},
+      {"arrangement", "arrangement discrete|layerwise"},
+      {"region", "region ID"}, {"seed", "seed N"}};
+  for (const auto &r : required)
+    if (!given.count(r[0]))
+      args.fail("keyword '" + std::string(r[1]) + "' is required");
   if (!given.count("start")) start_ = fabric::default_start(arrangement_);
 }
 
