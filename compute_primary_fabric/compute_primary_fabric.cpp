@@ -164,15 +164,18 @@ int ComputePrimaryFabric::read_keyword(const StyleArgs &args, int i) {
 
 // force_threshold absolute F | relative f
 int ComputePrimaryFabric::read_threshold(const StyleArgs &args, int i) {
-  const int mode = args.choice(i, {"absolute", "relative"});
+  const std::string mode = args.value(i, "absolute F or relative f");
+  if (mode != "absolute" && mode != "relative")
+    args.fail("force_threshold mode '" + mode +
+              "' is unknown: use absolute or relative");
   if (i + 2 >= args.size())
     args.fail("force_threshold " + std::string(args[i + 1]) + " needs a value");
   const double v = args.number_of(args[i + 2], "force_threshold");
   if (v < 0.0)
     args.fail("force_threshold " + std::string(args[i + 1]) + " " +
               args[i + 2] + " must not be negative");
-  options_.threshold = mode == 0 ? fabric::LoadThreshold::absolute(v)
-                                 : fabric::LoadThreshold::relative(v);
+  options_.threshold = mode == "absolute" ? fabric::LoadThreshold::absolute(v)
+                                          : fabric::LoadThreshold::relative(v);
   return i + 3;
 }
 

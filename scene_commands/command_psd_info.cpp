@@ -22,7 +22,9 @@ void CommandPsdInfo::command(int narg, char **arg) {
   int n = 20;
   if (narg == 3) {
     const StyleArgs args(error, "psd_info", narg - 1, arg + 1, {"intervals"});
-    if (strcmp(arg[1], "intervals") != 0) args.unknown_keyword(0);
+    if (strcmp(arg[1], "intervals") != 0)
+      args.fail("unknown keyword '" + std::string(arg[1]) + "': expected '" +
+                usage + "'");
     const long v = args.integer(0, "an integer in 1..100");
     args.require(v >= 1 && v <= 100, 0, "must be an integer in 1..100");
     n = static_cast<int>(v);
