@@ -6,11 +6,12 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <numeric>
 #include <set>
+#include <utility>
 #include <stdexcept>
 
 #include "atom.h"
@@ -28,6 +29,7 @@
 #include "modify.h"
 #include "pair_gran.h"
 #include "psd.h"
+#include "style_args.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -35,6 +37,16 @@ using namespace LAMMPS_NS;
 namespace {
 // The computes that warned about a non-finite state in this run (once each).
 std::set<const ComputePrimaryFabric *> warned_nonfinite;
+
+// Over all ranks: the sum of the counts and the largest of the examples.
+std::pair<long long, double> count_and_example(long long count, double example,
+                                               MPI_Comm world) {
+  long long all = 0;
+  MPI_Allreduce(&count, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  double max = 0.0;
+  MPI_Allreduce(&example, &max, 1, MPI_DOUBLE, MPI_MAX, world);
+  return {all, max};
+}
 }  // namespace
 
 ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
@@ -99,140 +111,88 @@ ComputePrimaryFabric::~ComputePrimaryFabric() {
 
 void ComputePrimaryFabric::parse(int narg, char **arg) {
   // arg points at the first keyword (LIGGGHTS passes iarg past the style).
-  auto fail = [&](const std::string &m) {
-    error->all(FLERR, ("Compute primary/fabric: " + m).c_str());
-  };
-  auto value = [&](int i, const char *what) -> const char * {
-    if (i + 1 >= narg)
-      fail(std::string("keyword '") + arg[i] + "' needs " + what);
-    return arg[i + 1];
-  };
-  auto number = [&](const char *s, const std::string &kw) {
-    char *end = nullptr;
-    double v = strtod(s, &end);
-    if (end == s || *end != '\0' || !std::isfinite(v))
-      fail(kw + " '" + s + "' is not a number");
-    return v;
-  };
-  auto integer = [&](const char *s, const std::string &kw) {
-    char *end = nullptr;
-    long v = strtol(s, &end, 10);
-    if (end == s || *end != '\0') fail(kw + " '" + s + "' is not an integer");
-    return v;
-  };
-  static const char *keywords[] = {"min_contacts", "force_threshold", "prune",
-                                   "intervals", "psd", "walls",
-                                   "direction_bins", "walls_in_fabric",
-                                   "max_iterations", "intervals_from",
-                                   "oz_tolerance", "store_every"};
-  auto is_keyword = [&](const char *s) {
-    for (const char *k : keywords)
-      if (strcmp(s, k) == 0) return true;
-    return false;
-  };
-  for (int i = 0; i < narg;) {
-    std::string kw = arg[i];
-    if (kw == "min_contacts") {
-      long n = integer(value(i, "an integer >= 1"), kw);
-      if (n < 1) fail("min_contacts " + std::string(arg[i + 1]) +
-                      " must be at least 1");
-      options_.min_contacts = static_cast<int>(n);
-      i += 2;
-    } else if (kw == "force_threshold") {
-      const char *mode = value(i, "'absolute F' or 'relative f'");
-      if (i + 2 >= narg) fail("force_threshold " + std::string(mode) +
-                              " needs a value");
-      double v = number(arg[i + 2], "force_threshold");
-      if (v < 0.0)
-        fail("force_threshold " + std::string(mode) + " " + arg[i + 2] +
-             " must not be negative");
-      if (strcmp(mode, "absolute") == 0)
-        options_.threshold = fabric::LoadThreshold::absolute(v);
-      else if (strcmp(mode, "relative") == 0)
-        options_.threshold = fabric::LoadThreshold::relative(v);
-      else
-        fail("force_threshold mode '" + std::string(mode) +
-             "' is unknown: use absolute or relative");
-      i += 3;
-    } else if (kw == "prune") {
-      const char *p = value(i, "once or iterate");
-      if (strcmp(p, "once") == 0)
-        options_.pruning = fabric::Pruning::once;
-      else if (strcmp(p, "iterate") == 0)
-        options_.pruning = fabric::Pruning::iterate;
-      else
-        fail("prune '" + std::string(p) + "' is unknown: use once or iterate");
-      i += 2;
-    } else if (kw == "intervals") {
-      long n = integer(value(i, "an integer in 1..100"), kw);
-      if (n < 1 || n > 100)
-        fail("intervals " + std::string(arg[i + 1]) + " must lie in 1..100");
-      nintervals_ = static_cast<int>(n);
-      i += 2;
-    } else if (kw == "intervals_from") {
-      intervals_from_ = value(i, "the ID of a fix that stores each atom's "
-                                 "interval index (fix sequential/pack)");
-      i += 2;
-    } else if (kw == "psd") {
-      psd_file_ = value(i, "a PSD file");
-      i += 2;
-    } else if (kw == "walls") {
-      walls_given_ = true;
-      ++i;
-      while (i < narg && !is_keyword(arg[i])) wall_ids_.push_back(arg[i++]);
-      if (wall_ids_.empty()) fail("keyword 'walls' needs at least one fix ID");
-    } else if (kw == "direction_bins") {
-      long n = integer(value(i, "an integer in 1..90"), kw);
-      if (n < 1 || n > 90)
-        fail("direction_bins " + std::string(arg[i + 1]) + " must lie in 1..90");
-      options_.direction_bins = static_cast<int>(n);
-      i += 2;
-    } else if (kw == "walls_in_fabric") {
-      const char *v = value(i, "yes or no");
-      if (strcmp(v, "yes") != 0 && strcmp(v, "no") != 0)
-        fail("walls_in_fabric '" + std::string(v) + "' must be yes or no");
-      options_.walls_in_fabric = strcmp(v, "yes") == 0;
-      i += 2;
-    } else if (kw == "oz_tolerance") {
-      const char *v = value(i, "a share in [0, 1)");
-      const double t = number(v, kw);
-      if (!(t >= 0.0 && t < 1.0))
-        fail("oz_tolerance " + std::string(v) + " must lie in [0, 1)");
-      options_.oz_tolerance = t;
-      i += 2;
-    } else if (kw == "store_every") {
-      long n = integer(value(i, "an integer >= 1"), kw);
-      if (n < 1 || n > 1000000000)
-        fail("store_every " + std::string(arg[i + 1]) +
-             " must lie in 1..1000000000");
-      store_every_ = n;
-      i += 2;
-    } else if (kw == "max_iterations") {
-      long n = integer(value(i, "an integer >= 1"), kw);
-      if (n < 1) fail("max_iterations " + std::string(arg[i + 1]) +
-                      " must be at least 1");
-      options_.max_iterations = static_cast<int>(n);
-      i += 2;
-    } else {
-      fail("unknown keyword '" + kw + "': allowed are min_contacts "
-           "force_threshold prune intervals intervals_from psd walls "
-           "direction_bins walls_in_fabric max_iterations oz_tolerance "
-           "store_every");
-    }
+  const StyleArgs args(error, "Compute primary/fabric", narg, arg,
+                       {"min_contacts", "force_threshold", "prune",
+                        "intervals", "intervals_from", "psd", "walls",
+                        "direction_bins", "walls_in_fabric", "max_iterations",
+                        "oz_tolerance", "store_every"});
+  for (int i = 0; i < narg;) i = read_keyword(args, i);
+  if (!psd_file_.empty()) read_psd(args);
+}
+
+// Reads the keyword at arg[i] and its values; returns the index after them.
+int ComputePrimaryFabric::read_keyword(const StyleArgs &args, int i) {
+  const std::string kw = args[i];
+  if (kw == "min_contacts") {
+    options_.min_contacts = static_cast<int>(args.integer_in(i, 1, LONG_MAX));
+  } else if (kw == "force_threshold") {
+    return read_threshold(args, i);
+  } else if (kw == "prune") {
+    options_.pruning = args.choice(i, {"once", "iterate"}) == 0
+                           ? fabric::Pruning::once
+                           : fabric::Pruning::iterate;
+  } else if (kw == "intervals") {
+    nintervals_ = static_cast<int>(args.integer_in(i, 1, 100));
+  } else if (kw == "intervals_from") {
+    intervals_from_ = args.value(i, "the ID of a fix that stores each atom's "
+                                    "interval index (fix sequential/pack)");
+  } else if (kw == "psd") {
+    psd_file_ = args.value(i, "a PSD file");
+  } else if (kw == "walls") {
+    walls_given_ = true;
+    while (++i < args.size() && !args.is_keyword(args[i]))
+      wall_ids_.push_back(args[i]);
+    if (wall_ids_.empty()) args.fail("keyword 'walls' needs at least one fix ID");
+    return i;
+  } else if (kw == "direction_bins") {
+    options_.direction_bins = static_cast<int>(args.integer_in(i, 1, 90));
+  } else if (kw == "walls_in_fabric") {
+    options_.walls_in_fabric = args.yes_no(i);
+  } else if (kw == "oz_tolerance") {
+    options_.oz_tolerance = args.number(i, "a share in [0, 1)");
+    args.require(options_.oz_tolerance >= 0.0 && options_.oz_tolerance < 1.0,
+                 i, "must lie in [0, 1)");
+  } else if (kw == "store_every") {
+    store_every_ = args.integer_in(i, 1, 1000000000);
+  } else if (kw == "max_iterations") {
+    options_.max_iterations = static_cast<int>(args.integer_in(i, 1, LONG_MAX));
+  } else {
+    args.unknown_keyword(i);
   }
-  if (!psd_file_.empty()) {
-    try {
-      auto psd = fabric::ParticleSizeDistribution::read(psd_file_);
-      for (const auto &iv : psd.equal_mass_intervals(nintervals_)) {
-        class_diameter_.push_back(iv.d_mean);
-        class_lower_.push_back(iv.d_lower);
-        class_upper_.push_back(iv.d_upper);
-      }
-    } catch (const std::exception &e) {
-      fail(e.what());
+  return i + 2;
+}
+
+// force_threshold absolute F | relative f
+int ComputePrimaryFabric::read_threshold(const StyleArgs &args, int i) {
+  const std::string mode = args.value(i, "absolute F or relative f");
+  if (mode != "absolute" && mode != "relative")
+    args.fail("force_threshold mode '" + mode +
+              "' is unknown: use absolute or relative");
+  if (i + 2 >= args.size())
+    args.fail("force_threshold " + std::string(args[i + 1]) + " needs a value");
+  const double v = args.number_of(args[i + 2], "force_threshold");
+  if (v < 0.0)
+    args.fail("force_threshold " + std::string(args[i + 1]) + " " +
+              args[i + 2] + " must not be negative");
+  options_.threshold = mode == "absolute" ? fabric::LoadThreshold::absolute(v)
+                                          : fabric::LoadThreshold::relative(v);
+  return i + 3;
+}
+
+// The size intervals from a PSD: its equal-mass intervals' bounds and
+// representative diameters.
+void ComputePrimaryFabric::read_psd(const StyleArgs &args) {
+  try {
+    auto psd = fabric::ParticleSizeDistribution::read(psd_file_);
+    for (const auto &iv : psd.equal_mass_intervals(nintervals_)) {
+      class_diameter_.push_back(iv.d_mean);
+      class_lower_.push_back(iv.d_lower);
+      class_upper_.push_back(iv.d_upper);
     }
-    intervals_ready_ = true;
+  } catch (const std::exception &e) {
+    args.fail(e.what());
   }
+  intervals_ready_ = true;
 }
 
 void ComputePrimaryFabric::init() {
@@ -394,41 +354,53 @@ fabric::IntervalAssignment ComputePrimaryFabric::interval_assignment(
 void ComputePrimaryFabric::analyse() {
   if (analysed_step_ == update->ntimestep) return;
   analysed_step_ = update->ntimestep;
+  check_stored_step();
+  grow_peratom();
+  Step step;
+  collect_particles(step);
+  warn_nonfinite();
+  collect_contacts(step);
+  try {
+    classify(step);
+  } catch (const std::exception &e) {
+    error->one(FLERR, e.what());
+  }
+}
+
+void ComputePrimaryFabric::check_stored_step() {
   const int every = pair_->storeContactForcesEvery();
-  if (every > 1 && update->ntimestep % every != 0) {
-    char m[512];
-    snprintf(m, sizeof m,
-             "Compute primary/fabric: evaluated at step " BIGINT_FORMAT
-             ", but the pair style stores contact forces only on multiples "
-             "of %d (store_every): evaluate it on those steps (thermo, dump "
-             "and fix ave/time every %d, runs of multiples of %d) or use "
-             "store_every 1",
-             update->ntimestep, every, every, every);
-    error->all(FLERR, m);
-  }
+  if (every <= 1 || update->ntimestep % every == 0) return;
+  char m[512];
+  snprintf(m, sizeof m,
+           "Compute primary/fabric: evaluated at step " BIGINT_FORMAT
+           ", but the pair style stores contact forces only on multiples "
+           "of %d (store_every): evaluate it on those steps (thermo, dump "
+           "and fix ave/time every %d, runs of multiples of %d) or use "
+           "store_every 1",
+           update->ntimestep, every, every, every);
+  error->all(FLERR, m);
+}
 
-  if (atom->nmax > nmax_) {
-    memory->destroy(peratom_);
-    memory->destroy(loose_);
-    nmax_ = atom->nmax;
-    memory->create(peratom_, nmax_, 3, "primary/fabric:peratom");
-    memory->create(loose_, nmax_, "primary/fabric:loose");
-    array_atom = peratom_;
-  }
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  double **x = atom->x;
+void ComputePrimaryFabric::grow_peratom() {
+  if (atom->nmax <= nmax_) return;
+  memory->destroy(peratom_);
+  memory->destroy(loose_);
+  nmax_ = atom->nmax;
+  memory->create(peratom_, nmax_, 3, "primary/fabric:peratom");
+  memory->create(loose_, nmax_, "primary/fabric:loose");
+  array_atom = peratom_;
+}
 
-  // The particles of this rank's group and their size intervals.
-  std::vector<double> representative;
+// The particles of this rank's group and their size intervals.
+void ComputePrimaryFabric::collect_particles(Step &step) {
+  const int nlocal = atom->nlocal;
   const fabric::IntervalAssignment intervals =
-      interval_assignment(representative);
+      interval_assignment(step.representative);
   const bool any_atoms = intervals.intervals() > 0;
   const double *stored = interval_fix_ ? interval_fix_->vector_atom : nullptr;
-  std::vector<int> index(nlocal, -1);
-  std::vector<fabric::Particle> particles;
+  step.index.assign(nlocal, -1);
   long long outside = 0, bad_index = 0;
   double outside_d = 0.0, bad_value = 0.0;
-  std::string bad_message;
   for (int i = 0; i < nlocal; ++i) {
     peratom_[i][0] = peratom_[i][1] = peratom_[i][2] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
@@ -436,8 +408,8 @@ void ComputePrimaryFabric::analyse() {
     int k = 0;
     try {
       k = any_atoms ? intervals.of(stored ? stored[i] : 0.0, d) : 0;
-    } catch (const std::exception &e) {
-      if (bad_index++ == 0) bad_message = e.what();
+    } catch (const std::exception &) {
+      ++bad_index;
       bad_value = stored[i];
       continue;
     }
@@ -446,82 +418,83 @@ void ComputePrimaryFabric::analyse() {
       outside_d = d;
       continue;
     }
-    index[i] = static_cast<int>(particles.size());
-    particles.push_back({static_cast<long long>(atom->tag[i]), atom->radius[i],
-                         atom->rmass[i], k});
+    step.index[i] = static_cast<int>(step.particles.size());
+    step.particles.push_back({static_cast<long long>(atom->tag[i]),
+                              atom->radius[i], atom->rmass[i], k});
   }
-  long long bad_all = 0;
-  MPI_Allreduce(&bad_index, &bad_all, 1, MPI_LONG_LONG, MPI_SUM, world);
-  if (bad_all > 0) {
-    double v = 0.0;
-    MPI_Allreduce(&bad_value, &v, 1, MPI_DOUBLE, MPI_MAX, world);
-    char m[512];
-    snprintf(m, sizeof m,
-             "Compute primary/fabric: %lld particles (e.g. index %g) carry an "
-             "interval index of fix '%s' that is not an integer in 0..%d: "
-             "give the compute the fix's number of intervals (intervals N)",
-             bad_all, v, intervals_from_.c_str(), nintervals_);
-    error->all(FLERR, m);
-  }
-  long long outside_all = 0;
-  MPI_Allreduce(&outside, &outside_all, 1, MPI_LONG_LONG, MPI_SUM, world);
-  if (outside_all > 0) {
-    double d = 0.0;
-    MPI_Allreduce(&outside_d, &d, 1, MPI_DOUBLE, MPI_MAX, world);
-    char m[512];
-    snprintf(m, sizeof m,
-             "Compute primary/fabric: %lld particles (e.g. diameter %g) fit no "
-             "size interval of %s: the PSD or intervals setting does not "
-             "match the specimen",
-             outside_all, d,
-             !psd_file_.empty() ? psd_file_.c_str()
-             : interval_fix_   ? ("the particles of fix " + intervals_from_ +
-                                " (intervals_from)").c_str()
-                               : "the specimen's sizes");
-    error->all(FLERR, m);
-  }
+  stop_on_bad_index(bad_index, bad_value);
+  stop_on_outside(outside, outside_d);
+}
 
-  // A state with NaN or inf positions or forces (e.g. coincident particles)
-  // classifies as loose everywhere: say so instead of a silent "all loose".
+void ComputePrimaryFabric::stop_on_bad_index(long long count, double value) {
+  const auto [all, v] = count_and_example(count, value, world);
+  if (all == 0) return;
+  char m[512];
+  snprintf(m, sizeof m,
+           "Compute primary/fabric: %lld particles (e.g. index %g) carry an "
+           "interval index of fix '%s' that is not an integer in 0..%d: "
+           "give the compute the fix's number of intervals (intervals N)",
+           all, v, intervals_from_.c_str(), nintervals_);
+  error->all(FLERR, m);
+}
+
+void ComputePrimaryFabric::stop_on_outside(long long count, double diameter) {
+  const auto [all, d] = count_and_example(count, diameter, world);
+  if (all == 0) return;
+  const std::string of =
+      !psd_file_.empty() ? psd_file_
+      : interval_fix_    ? "the particles of fix " + intervals_from_ +
+                            " (intervals_from)"
+                         : "the specimen's sizes";
+  char m[512];
+  snprintf(m, sizeof m,
+           "Compute primary/fabric: %lld particles (e.g. diameter %g) fit no "
+           "size interval of %s: the PSD or intervals setting does not "
+           "match the specimen",
+           all, d, of.c_str());
+  error->all(FLERR, m);
+}
+
+// A state with NaN or inf positions or forces (e.g. coincident particles)
+// classifies as loose everywhere: say so instead of a silent "all loose".
+void ComputePrimaryFabric::warn_nonfinite() {
   long long nonfinite = 0;
-  for (int i = 0; i < nlocal; ++i) {
+  for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & groupbit)) continue;
     bool ok = true;
     for (int a = 0; a < 3; ++a)
-      ok = ok && std::isfinite(x[i][a]) && std::isfinite(atom->f[i][a]);
+      ok = ok && std::isfinite(atom->x[i][a]) && std::isfinite(atom->f[i][a]);
     nonfinite += !ok;
   }
-  long long nonfinite_all = 0;
-  MPI_Allreduce(&nonfinite, &nonfinite_all, 1, MPI_LONG_LONG, MPI_SUM, world);
-  if (nonfinite_all > 0 && !warned_nonfinite.count(this)) {
-    warned_nonfinite.insert(this);
-    if (comm->me == 0) {
-      char m[512];
-      snprintf(m, sizeof m,
-               "Compute primary/fabric: %lld particles of the group have "
-               "non-finite (NaN or inf) positions or forces at step " BIGINT_FORMAT
-               " (coincident particles, e.g. a specimen inserted twice?); "
-               "the classification of this state is meaningless",
-               nonfinite_all, update->ntimestep);
-      error->warning(FLERR, m);
-    }
-  }
+  long long all = 0;
+  MPI_Allreduce(&nonfinite, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (all == 0 || warned_nonfinite.count(this)) return;
+  warned_nonfinite.insert(this);
+  if (comm->me != 0) return;
+  char m[512];
+  snprintf(m, sizeof m,
+           "Compute primary/fabric: %lld particles of the group have "
+           "non-finite (NaN or inf) positions or forces at step " BIGINT_FORMAT
+           " (coincident particles, e.g. a specimen inserted twice?); "
+           "the classification of this state is meaningless",
+           all, update->ntimestep);
+  error->warning(FLERR, m);
+}
 
-  // Each owned particle's contact ends: both ends of every contact live on
-  // the ranks that own them (newton off), so each end is passed as a half.
-  // One definition of the normal force for particles and walls alike
-  // (fabric::normal_force): the force on the particle projected onto the
-  // contact normal from the partner to the particle.
+// Each owned particle's contact ends: both ends of every contact live on
+// the ranks that own them (newton off), so each end is passed as a half.
+// One definition of the normal force for particles and walls alike
+// (fabric::normal_force): the force on the particle projected onto the
+// contact normal from the partner to the particle.
+void ComputePrimaryFabric::collect_contacts(Step &step) {
   FixContactPropertyAtom *cf = pair_->fix_contact_forces();
   if (!cf)
     error->all(FLERR, "Compute primary/fabric: the pair style stores no "
                       "contact forces (is the compute defined after the "
                       "pair style?)");
-  std::vector<fabric::ParticleContact> contacts;
-  std::vector<int> partner;  // local or ghost index of each contact's partner
-  std::vector<fabric::WallContact> walls;
-  for (int i = 0; i < nlocal; ++i) {
-    if (index[i] < 0) continue;
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (step.index[i] < 0) continue;
     for (int k = 0; k < cf->n_partner(i); ++k) {
       int j = atom->map(cf->partner(i, k));
       if (j < 0) continue;  // not within reach: no longer in contact
@@ -530,9 +503,10 @@ void ComputePrimaryFabric::analyse() {
       const Eigen::Vector3d j_to_i(x[i][0] - x[j][0], x[i][1] - x[j][1],
                                    x[i][2] - x[j][2]);
       if (!(j_to_i.norm() > 0.0)) continue;
-      contacts.push_back(fabric::particle_contact(
-          index[i], -1, Eigen::Vector3d(F[0], F[1], F[2]), j_to_i, false));
-      partner.push_back(j);
+      step.contacts.push_back(fabric::particle_contact(
+          step.index[i], -1, Eigen::Vector3d(F[0], F[1], F[2]), j_to_i,
+          false));
+      step.partner.push_back(j);
     }
     // The wall's stress storage: fx fy fz, then the contact vector from the
     // wall's contact point to the particle's centre (deltax..deltaz), whose
@@ -544,63 +518,63 @@ void ComputePrimaryFabric::analyse() {
         const double *F = w->contacthistory(i, k);
         const Eigen::Vector3d wall_to_i(F[3], F[4], F[5]);
         if (!fabric::overlaps(wall_to_i.norm(), atom->radius[i])) continue;
-        walls.push_back(fabric::wall_contact(
-            index[i], Eigen::Vector3d(F[0], F[1], F[2]), wall_to_i));
+        step.walls.push_back(fabric::wall_contact(
+            step.index[i], Eigen::Vector3d(F[0], F[1], F[2]), wall_to_i));
       }
   }
+}
 
-  try {
-    auto local = fabric::normal_force_sums(contacts, walls);
-    fabric::NormalForceSums global;
-    MPI_Allreduce(local.values.data(), global.values.data(), 2, MPI_DOUBLE,
-                  MPI_SUM, world);
-    threshold_force_ = options_.threshold.force(global.mean());
+// The threshold force, the classification (the core's prune loop; the
+// partners' classes cross the ranks by forward communication, each pass's
+// count by a reduction), the sums and the per-atom values.
+void ComputePrimaryFabric::classify(const Step &step) {
+  auto local = fabric::normal_force_sums(step.contacts, step.walls);
+  fabric::NormalForceSums global;
+  MPI_Allreduce(local.values.data(), global.values.data(), 2, MPI_DOUBLE,
+                MPI_SUM, world);
+  threshold_force_ = options_.threshold.force(global.mean());
 
-    // prune iterate: the core's loop; the partners' classes cross the ranks
-    // by forward communication, each pass's count by a reduction.
-    fabric::PartnerExchange exchange;
-    exchange.partners_loose = [&](const std::vector<fabric::Fraction> &f,
-                                  std::vector<char> &partner_loose) {
-      for (int i = 0; i < nall; ++i) loose_[i] = 0.0;
-      for (int i = 0; i < nlocal; ++i)
-        if (index[i] >= 0 && f[index[i]] == fabric::Fraction::loose)
-          loose_[i] = 1.0;
-      comm->forward_comm_compute(this);
-      for (size_t c = 0; c < partner.size(); ++c)
-        partner_loose[c] = loose_[partner[c]] != 0.0;
-    };
-    exchange.global_sum = [&](long long n) {
-      long long all = 0;
-      MPI_Allreduce(&n, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
-      return all;
-    };
-    const fabric::Classification cls = fabric::classify(
-        static_cast<int>(particles.size()), contacts, walls, threshold_force_,
-        options_, &exchange);
-    iterations_ = cls.iterations;
-    if (!cls.converged) {
-      if (comm->me == 0 && !warned_)
-        error->warning(FLERR, "Compute primary/fabric: prune iterate did "
-                              "not converge within max_iterations");
-      warned_ = true;
-    }
+  fabric::PartnerExchange exchange;
+  exchange.partners_loose = [&](const std::vector<fabric::Fraction> &f,
+                                std::vector<char> &partner_loose) {
+    for (int i = 0; i < atom->nlocal + atom->nghost; ++i) loose_[i] = 0.0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (step.index[i] >= 0 && f[step.index[i]] == fabric::Fraction::loose)
+        loose_[i] = 1.0;
+    comm->forward_comm_compute(this);
+    for (size_t c = 0; c < step.partner.size(); ++c)
+      partner_loose[c] = loose_[step.partner[c]] != 0.0;
+  };
+  exchange.global_sum = [&](long long n) {
+    long long all = 0;
+    MPI_Allreduce(&n, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+    return all;
+  };
+  const fabric::Classification cls = fabric::classify(
+      static_cast<int>(step.particles.size()), step.contacts, step.walls,
+      threshold_force_, options_, &exchange);
+  iterations_ = cls.iterations;
+  if (!cls.converged) {
+    if (comm->me == 0 && !warned_)
+      error->warning(FLERR, "Compute primary/fabric: prune iterate did "
+                            "not converge within max_iterations");
+    warned_ = true;
+  }
 
-    fabric::FabricSums sums = fabric::accumulate(
-        particles, contacts, walls, cls, threshold_force_, nintervals_, options_);
-    fabric::FabricSums total(nintervals_, options_.direction_bins);
-    MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
-                  world);
-    summary_ = fabric::finalise(total, representative, options_.oz_tolerance);
+  fabric::FabricSums sums =
+      fabric::accumulate(step.particles, step.contacts, step.walls, cls,
+                         threshold_force_, nintervals_, options_);
+  fabric::FabricSums total(nintervals_, options_.direction_bins);
+  MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
+                world);
+  summary_ = fabric::finalise(total, step.representative, options_.oz_tolerance);
 
-    for (int i = 0; i < nlocal; ++i) {
-      if (index[i] < 0) continue;
-      int p = index[i];
-      peratom_[i][0] = cls.loaded_contacts[p];
-      peratom_[i][1] = cls.fraction[p] == fabric::Fraction::primary ? 1.0 : 0.0;
-      peratom_[i][2] = particles[p].interval + 1;
-    }
-  } catch (const std::exception &e) {
-    error->one(FLERR, e.what());
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (step.index[i] < 0) continue;
+    const int p = step.index[i];
+    peratom_[i][0] = cls.loaded_contacts[p];
+    peratom_[i][1] = cls.fraction[p] == fabric::Fraction::primary ? 1.0 : 0.0;
+    peratom_[i][2] = step.particles[p].interval + 1;
   }
 }
 

@@ -37,8 +37,28 @@ class ComputePrimaryFabric : public Compute {
 
  private:
   void parse(int narg, char **arg);
+  int read_keyword(const class StyleArgs &, int i);
+  int read_threshold(const class StyleArgs &, int i);
+  void read_psd(const class StyleArgs &);
   void find_walls();
+  // The particles and contact ends of this rank in one evaluation.
+  struct Step {
+    std::vector<int> index;  // per local atom: its particle, -1 none
+    std::vector<fabric::Particle> particles;
+    std::vector<fabric::ParticleContact> contacts;
+    std::vector<int> partner;  // local or ghost index of each contact's partner
+    std::vector<fabric::WallContact> walls;
+    std::vector<double> representative;  // diameters (empty: measured)
+  };
   void analyse();      // once per step: classification and sums
+  void check_stored_step();
+  void grow_peratom();
+  void collect_particles(Step &);
+  void stop_on_bad_index(long long count, double value);
+  void stop_on_outside(long long count, double diameter);
+  void warn_nonfinite();
+  void collect_contacts(Step &);
+  void classify(const Step &);
   void assign_intervals();
   fabric::IntervalAssignment interval_assignment(
       std::vector<double> &representative);

@@ -36,6 +36,8 @@
 #include <string>
 #include <vector>
 
+#include "min_contacts.h"
+
 namespace fabric {
 
 struct Particle {
@@ -145,7 +147,7 @@ std::string to_string(Pruning p);
 
 struct Options {
   LoadThreshold threshold;
-  int min_contacts = 3;          // fewer loaded contacts: loose (section 3.1)
+  int min_contacts = kMinContacts;  // fewer loaded contacts: loose (3.1)
   Pruning pruning = Pruning::once;
   int max_iterations = 1000;     // iterate only: recount passes at most
   int direction_bins = 9;        // polar-angle bins of 90/M degrees

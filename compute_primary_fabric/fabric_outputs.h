@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fabric_analysis.h"
+#include "output_table.h"
 
 // Global vector, entries 1..31; then two entries per direction bin k = 1..M:
 // 31 + 2k - 1 the fraction of the loaded contacts in bin k, 31 + 2k their
@@ -63,25 +64,19 @@
 
 namespace fabric {
 
-#define FABRIC_ENUM_ENTRY(position, name, meaning) name,
-enum class VectorEntry { FABRIC_VECTOR_ENTRIES(FABRIC_ENUM_ENTRY) count };
-enum class ArrayColumn { FABRIC_ARRAY_COLUMNS(FABRIC_ENUM_ENTRY) count };
-#undef FABRIC_ENUM_ENTRY
+enum class VectorEntry { FABRIC_VECTOR_ENTRIES(FABRIC_OUTPUT_NAME) count };
+enum class ArrayColumn { FABRIC_ARRAY_COLUMNS(FABRIC_OUTPUT_NAME) count };
 
 constexpr int kVectorFixedEntries = static_cast<int>(VectorEntry::count);
 constexpr int kArrayColumns = static_cast<int>(ArrayColumn::count);
 
-// The positions written in the tables are the enumerators' order + 1.
-#define FABRIC_CHECK_VECTOR(position, name, meaning)                      \
-  static_assert(static_cast<int>(VectorEntry::name) + 1 == position,      \
-                "fabric_outputs.h: vector entry " #name " out of order");
-#define FABRIC_CHECK_ARRAY(position, name, meaning)                       \
-  static_assert(static_cast<int>(ArrayColumn::name) + 1 == position,      \
-                "fabric_outputs.h: array column " #name " out of order");
-FABRIC_VECTOR_ENTRIES(FABRIC_CHECK_VECTOR)
-FABRIC_ARRAY_COLUMNS(FABRIC_CHECK_ARRAY)
-#undef FABRIC_CHECK_VECTOR
-#undef FABRIC_CHECK_ARRAY
+constexpr int kVectorPositions[] = {
+    FABRIC_VECTOR_ENTRIES(FABRIC_OUTPUT_POSITION)};
+constexpr int kArrayPositions[] = {FABRIC_ARRAY_COLUMNS(FABRIC_OUTPUT_POSITION)};
+static_assert(counts_from_one(kVectorPositions),
+              "fabric_outputs.h: the vector positions must count 1, 2, 3 ...");
+static_assert(counts_from_one(kArrayPositions),
+              "fabric_outputs.h: the array positions must count 1, 2, 3 ...");
 
 // Size of the global vector with M direction bins.
 inline int vector_size(int direction_bins) {

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,11 +20,13 @@
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
+#include "min_contacts.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "neighbour_count.h"
+#include "pack_outputs.h"
 #include "region.h"
-#include "specimen_measure.h"
-#include "sphere_grid.h"
+#include "style_args.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -67,7 +69,7 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
       verbose_(true),
       start_(fabric::Start::floor),
       layering_(fabric::PackingSpec().layering),
-      summary_{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+      vector_(fabric::kPackVectorEntries, 0.0),
       inserted_(0),
       interval_(nullptr),
       nmax_(0) {
@@ -103,7 +105,7 @@ FixSequentialPack::FixSequentialPack(LAMMPS *lmp, int narg, char **arg)
   size_peratom_cols = 0;
   peratom_freq = 1;
   vector_flag = 1;
-  size_vector = 12;
+  size_vector = fabric::kPackVectorEntries;  // pack_outputs.h
   global_freq = 1;
   extvector = 0;
   grow_arrays(atom->nmax);
@@ -119,183 +121,143 @@ FixSequentialPack::~FixSequentialPack() {
 }
 
 void FixSequentialPack::parse(int narg, char **arg) {
-  auto fail = [&](const std::string &m) {
-    error->all(FLERR, ("Fix sequential/pack: " + m).c_str());
-  };
-  auto need_value = [&](int i, const char *kw, const char *what) {
-    if (i + 1 >= narg)
-      fail(std::string("keyword '") + kw + "' needs a value: " + what);
-  };
-  auto number = [&](const char *s, const char *kw) {
-    char *end = nullptr;
-    double v = strtod(s, &end);
-    if (end == s || *end != '\0' || !std::isfinite(v))
-      fail(std::string(kw) + " '" + s + "' is not a number");
-    return v;
-  };
-  auto integer = [&](const char *s, const char *kw) {
-    char *end = nullptr;
-    long v = strtol(s, &end, 10);
-    if (end == s || *end != '\0')
-      fail(std::string(kw) + " '" + s + "' is not an integer");
-    return v;
-  };
-  auto yesno = [&](const char *s, const char *kw) {
-    if (strcmp(s, "yes") == 0) return true;
-    if (strcmp(s, "no") == 0) return false;
-    fail(std::string(kw) + " '" + s + "' must be yes or no");
-    return false;
-  };
-  bool have_arrangement = false;
-  bool start_given = false;
-  long seed = 0;
-  for (int i = 3; i < narg; i += 2) {
-    const char *kw = arg[i];
-    if (strcmp(kw, "psd") == 0) {
-      need_value(i, kw, "a sieve-analysis file");
-      psd_file_ = arg[i + 1];
-    } else if (strcmp(kw, "porosity") == 0) {
-      need_value(i, kw, "a number in (0, 1)");
-      porosity_ = number(arg[i + 1], kw);
-      if (!(porosity_ > 0.0 && porosity_ < 1.0))
-        fail("porosity " + std::string(arg[i + 1]) +
-             " must lie strictly between 0 and 1");
-    } else if (strcmp(kw, "arrangement") == 0) {
-      need_value(i, kw, "discrete or layerwise");
-      if (strcmp(arg[i + 1], "discrete") == 0)
-        arrangement_ = fabric::Arrangement::discrete;
-      else if (strcmp(arg[i + 1], "layerwise") == 0)
-        arrangement_ = fabric::Arrangement::layerwise;
-      else
-        fail("arrangement '" + std::string(arg[i + 1]) +
-             "' is unknown: use discrete or layerwise");
-      have_arrangement = true;
-    } else if (strcmp(kw, "region") == 0) {
-      need_value(i, kw, "a region ID");
-      region_id_ = arg[i + 1];
-    } else if (strcmp(kw, "seed") == 0) {
-      need_value(i, kw, "a positive integer");
-      seed = integer(arg[i + 1], kw);
-      if (seed <= 0 || seed > INT32_MAX)
-        fail("seed " + std::string(arg[i + 1]) +
-             " must be a positive integer (1..2147483647)");
-    } else if (strcmp(kw, "intervals") == 0) {
-      need_value(i, kw, "an integer in 1..100");
-      long n = integer(arg[i + 1], kw);
-      if (n < 1 || n > 100)
-        fail("intervals " + std::string(arg[i + 1]) + " must lie in 1..100");
-      nintervals_ = static_cast<int>(n);
-    } else if (strcmp(kw, "density") == 0) {
-      need_value(i, kw, "a positive number");
-      density_ = number(arg[i + 1], kw);
-      if (!(density_ > 0.0))
-        fail("density " + std::string(arg[i + 1]) + " must be positive");
-    } else if (strcmp(kw, "type") == 0) {
-      need_value(i, kw, "an atom type");
-      long t = integer(arg[i + 1], kw);
-      if (t < 1 || t > atom->ntypes)
-        fail("type " + std::string(arg[i + 1]) + " must lie in 1.." +
-             std::to_string(atom->ntypes) + " (the box's atom types)");
-      atom_type_ = static_cast<int>(t);
-    } else if (strcmp(kw, "fill_pores") == 0) {
-      need_value(i, kw, "yes or no");
-      fill_pores_ = yesno(arg[i + 1], kw);
-    } else if (strcmp(kw, "layering") == 0) {
-      need_value(i, kw, "a positive number (ln radius)");
-      layering_ = number(arg[i + 1], kw);
-      if (!(layering_ > 0.0))
-        fail("layering " + std::string(arg[i + 1]) +
-             " must be positive (width of the size preference in ln radius)");
-    } else if (strcmp(kw, "start") == 0) {
-      need_value(i, kw, "auto, floor_ceiling, floor or centre");
-      if (strcmp(arg[i + 1], "auto") == 0)
-        start_ = fabric::Start::automatic;
-      else if (strcmp(arg[i + 1], "floor") == 0)
-        start_ = fabric::Start::floor;
-      else if (strcmp(arg[i + 1], "floor_ceiling") == 0)
-        start_ = fabric::Start::floor_ceiling;
-      else if (strcmp(arg[i + 1], "centre") == 0)
-        start_ = fabric::Start::centre;
-      else
-        fail("start '" + std::string(arg[i + 1]) +
-             "' is unknown: use auto, floor_ceiling, floor or centre");
-      start_given = true;
-    } else if (strcmp(kw, "verbose") == 0) {
-      need_value(i, kw, "yes or no");
-      verbose_ = yesno(arg[i + 1], kw);
+  // arg[3..]: the keywords (arg[0..2]: ID, group, style)
+  const StyleArgs args(error, "Fix sequential/pack", narg - 3, arg + 3,
+                       {"psd", "porosity", "arrangement", "region", "seed",
+                        "intervals", "density", "type", "fill_pores", "start",
+                        "layering", "verbose"});
+  read_keywords(args);
+  read_container(args);
+  read_psd(args);
+  check_memory(args);
+  warn_empty_intervals();
+}
+
+void FixSequentialPack::read_keywords(const StyleArgs &args) {
+  static const fabric::Start starts[] = {
+      fabric::Start::automatic, fabric::Start::floor_ceiling,
+      fabric::Start::floor, fabric::Start::centre};
+  std::set<std::string> given;
+  for (int i = 0; i < args.size(); i += 2) {
+    const std::string kw = args[i];
+    given.insert(kw);
+    if (kw == "psd") {
+      psd_file_ = args.value(i, "a sieve-analysis file");
+    } else if (kw == "porosity") {
+      porosity_ = args.number(i, "a number in (0, 1)");
+      args.require(porosity_ > 0.0 && porosity_ < 1.0, i,
+                   "must lie strictly between 0 and 1");
+    } else if (kw == "arrangement") {
+      arrangement_ = args.choice(i, {"discrete", "layerwise"}) == 0
+                         ? fabric::Arrangement::discrete
+                         : fabric::Arrangement::layerwise;
+    } else if (kw == "region") {
+      region_id_ = args.value(i, "a region ID");
+    } else if (kw == "seed") {
+      seed_ = static_cast<int>(
+          args.integer_in(i, 1, INT32_MAX, "a positive integer"));
+    } else if (kw == "intervals") {
+      nintervals_ = static_cast<int>(args.integer_in(i, 1, 100));
+    } else if (kw == "density") {
+      density_ = args.number(i, "a positive number");
+      args.require(density_ > 0.0, i, "must be positive");
+    } else if (kw == "type") {
+      atom_type_ = static_cast<int>(
+          args.integer_in(i, 1, atom->ntypes, "the box's atom types"));
+    } else if (kw == "fill_pores") {
+      fill_pores_ = args.yes_no(i);
+    } else if (kw == "layering") {
+      layering_ = args.number(i, "a positive number (ln radius)");
+      args.require(layering_ > 0.0, i,
+                   "must be positive (width of the size preference in ln "
+                   "radius)");
+    } else if (kw == "start") {
+      start_ = starts[args.choice(i, {"auto", "floor_ceiling", "floor",
+                                      "centre"})];
+    } else if (kw == "verbose") {
+      verbose_ = args.yes_no(i);
     } else {
-      fail("unknown keyword '" + std::string(kw) +
-           "': allowed are psd porosity arrangement region seed intervals "
-           "density type fill_pores start layering verbose");
+      args.unknown_keyword(i);
     }
   }
-  if (psd_file_.empty()) fail("keyword 'psd FILE' is required");
-  if (porosity_ < 0.0) fail("keyword 'porosity P' is required");
-  if (!have_arrangement)
-    fail("keyword 'arrangement discrete|layerwise' is required");
-  if (region_id_.empty()) fail("keyword 'region ID' is required");
-  if (seed == 0) fail("keyword 'seed N' is required");
-  if (!start_given) start_ = fabric::default_start(arrangement_);
-  seed_ = static_cast<int>(seed);
+  static const char *const required[][2] = {
+      {"psd", "psd FILE"}, {"porosity", "porosity P"},
+      {"arrangement", "arrangement discrete|layerwise"},
+      {"region", "region ID"}, {"seed", "seed N"}};
+  for (const auto &r : required)
+    if (!given.count(r[0]))
+      args.fail("keyword '" + std::string(r[1]) + "' is required");
+  if (!given.count("start")) start_ = fabric::default_start(arrangement_);
+}
 
-  // The container.
+void FixSequentialPack::read_container(const StyleArgs &args) {
   int iregion = domain->find_region(const_cast<char *>(region_id_.c_str()));
-  if (iregion < 0) fail("region '" + region_id_ + "' does not exist");
+  if (iregion < 0) args.fail("region '" + region_id_ + "' does not exist");
   Region *reg = domain->regions[iregion];
   if (strcmp(reg->style, "block") != 0)
-    fail("region '" + region_id_ + "' is style " + reg->style +
-         "; the container must be a block region");
+    args.fail("region '" + region_id_ + "' is style " + reg->style +
+              "; the container must be a block region");
   if (!reg->interior)
-    fail("region '" + region_id_ + "' must be 'side in'");
+    args.fail("region '" + region_id_ + "' must be 'side in'");
   lo_[0] = reg->extent_xlo, hi_[0] = reg->extent_xhi;
   lo_[1] = reg->extent_ylo, hi_[1] = reg->extent_yhi;
   lo_[2] = reg->extent_zlo, hi_[2] = reg->extent_zhi;
   for (int a = 0; a < 3; ++a)
     if (lo_[a] < domain->boxlo[a] - 1e-12 * domain->prd[a] ||
         hi_[a] > domain->boxhi[a] + 1e-12 * domain->prd[a])
-      fail("region '" + region_id_ + "' extends outside the simulation box "
-           "along " + "xyz"[a] + ": " + fmt("%g", lo_[a]) + ".." +
-           fmt("%g", hi_[a]) + " vs box " + fmt("%g", domain->boxlo[a]) +
-           ".." + fmt("%g", domain->boxhi[a]));
+      args.fail("region '" + region_id_ +
+                "' extends outside the simulation box along " + "xyz"[a] +
+                ": " + fmt("%g", lo_[a]) + ".." + fmt("%g", hi_[a]) +
+                " vs box " + fmt("%g", domain->boxlo[a]) + ".." +
+                fmt("%g", domain->boxhi[a]));
+}
 
-  // The PSD and the particle list.
+// The PSD, its intervals and the particle list of the container.
+void FixSequentialPack::read_psd(const StyleArgs &args) {
   try {
     psd_ = new fabric::ParticleSizeDistribution(
         fabric::ParticleSizeDistribution::read(psd_file_));
     intervals_ = psd_->equal_mass_intervals(nintervals_);
   } catch (const std::exception &e) {
-    fail(e.what());
+    args.fail(e.what());
   }
   double dmax = intervals_.back().d_mean;
   for (int a = 0; a < 3; ++a)
     if (hi_[a] - lo_[a] < dmax)
-      fail("container '" + region_id_ + "' is " + fmt("%g", hi_[a] - lo_[a]) +
-           " wide along " + "xyz"[a] + ", smaller than the largest particle "
-           "(diameter " + fmt("%g", dmax) + " of the coarsest interval)");
-  double volume = (hi_[0] - lo_[0]) * (hi_[1] - lo_[1]) * (hi_[2] - lo_[2]);
-  list_ = fabric::particle_list(intervals_, volume, porosity_);
+      args.fail("container '" + region_id_ + "' is " +
+                fmt("%g", hi_[a] - lo_[a]) + " wide along " + "xyz"[a] +
+                ", smaller than the largest particle (diameter " +
+                fmt("%g", dmax) + " of the coarsest interval)");
+  list_ = fabric::particle_list(intervals_, container().volume(), porosity_);
+  // the packer starts from a face of three grains
+  if (list_.total() < 3)
+    args.fail("the container holds only " + std::to_string(list_.total()) +
+              " particles of this PSD in " + std::to_string(nintervals_) +
+              " intervals; at least 3 are needed: use a larger region, a "
+              "lower porosity or fewer intervals");
+}
+
+void FixSequentialPack::check_memory(const StyleArgs &args) {
   double total = 0.0;
   for (double t : list_.target_count) total += t;
   long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   double memory = pages > 0 && page > 0 ? double(pages) * page : 64e9;
   double need = total * (kPackerBytes * comm->nprocs + kAtomBytes);
   if (total > INT32_MAX / 4 || need > 0.8 * memory)
-    fail("the container holds about " + fmt("%.4g", total) +
-         " particles at this porosity and PSD, needing about " +
-         fmt("%.3g", need / 1073741824.0) + " GiB (" +
-         fmt("%.0f", kPackerBytes) + " B per particle on each of the " +
-         std::to_string(comm->nprocs) + " MPI rank(s) plus " +
-         fmt("%.0f", kAtomBytes) + " B per atom), more than the " +
-         fmt("%.3g", memory / 1073741824.0) +
-         " GiB here (and at most " + std::to_string(INT32_MAX / 4) +
-         " particles): use a smaller region or a coarser PSD");
-  if (list_.total() < 3)
-    fail("the container holds only " + std::to_string(list_.total()) +
-         " particles of this PSD in " + std::to_string(nintervals_) +
-         " intervals; at least 3 are needed: use a larger region, a lower "
-         "porosity or fewer intervals");
-  // Intervals that round to no grain leave their mass share out of the
-  // specimen: say which, and how large a container keeps them all.
+    args.fail("the container holds about " + fmt("%.4g", total) +
+              " particles at this porosity and PSD, needing about " +
+              fmt("%.3g", need / 1073741824.0) + " GiB (" +
+              fmt("%.0f", kPackerBytes) + " B per particle on each of the " +
+              std::to_string(comm->nprocs) + " MPI rank(s) plus " +
+              fmt("%.0f", kAtomBytes) + " B per atom), more than the " +
+              fmt("%.3g", memory / 1073741824.0) + " GiB here (and at most " +
+              std::to_string(INT32_MAX / 4) +
+              " particles): use a smaller region or a coarser PSD");
+}
+
+// Intervals that round to no grain leave their mass share out of the
+// specimen: say which, and how large a container keeps them all.
+void FixSequentialPack::warn_empty_intervals() {
   std::string empty;
   int nempty = 0;
   double grow = 1.0;  // volume factor that gives every interval 1 grain
@@ -305,19 +267,23 @@ void FixSequentialPack::parse(int narg, char **arg) {
       if (nempty <= 3) empty += (empty.empty() ? "" : ", ") + std::to_string(k + 1);
       grow = std::max(grow, 0.5 / std::max(list_.target_count[k], 1e-300));
     }
-  if (nempty > 0 && comm->me == 0) {
-    char w[512];
-    snprintf(w, sizeof w,
-             "Fix sequential/pack: %d of %d intervals hold no grain in this "
-             "container (interval%s %s%s: target counts below 0.5 round to "
-             "0), so %.0f %% of the PSD's mass is missing from the specimen. "
-             "Use a container at least %.3g times the volume (edges %.3g "
-             "times longer) or fewer intervals",
-             nempty, nintervals_, nempty > 1 ? "s" : "", empty.c_str(),
-             nempty > 3 ? ", ..." : "", 100.0 * nempty / nintervals_, grow,
-             std::cbrt(grow));
-    error->warning(FLERR, w);
-  }
+  if (nempty == 0 || comm->me != 0) return;
+  char w[512];
+  snprintf(w, sizeof w,
+           "Fix sequential/pack: %d of %d intervals hold no grain in this "
+           "container (interval%s %s%s: target counts below 0.5 round to "
+           "0), so %.0f %% of the PSD's mass is missing from the specimen. "
+           "Use a container at least %.3g times the volume (edges %.3g "
+           "times longer) or fewer intervals",
+           nempty, nintervals_, nempty > 1 ? "s" : "", empty.c_str(),
+           nempty > 3 ? ", ..." : "", 100.0 * nempty / nintervals_, grow,
+           std::cbrt(grow));
+  error->warning(FLERR, w);
+}
+
+fabric::Box FixSequentialPack::container() const {
+  return {fabric::Vec3(lo_[0], lo_[1], lo_[2]),
+          fabric::Vec3(hi_[0], hi_[1], hi_[2])};
 }
 
 int FixSequentialPack::setmask() { return PRE_EXCHANGE; }
@@ -352,9 +318,34 @@ void FixSequentialPack::setup_pre_exchange() {
 }
 
 void FixSequentialPack::insert_specimen() {
-  fabric::PackingSpec spec = fabric::packing_spec(
-      list_, fabric::Vec3(lo_[0], lo_[1], lo_[2]),
-      fabric::Vec3(hi_[0], hi_[1], hi_[2]));
+  warn_atoms_inside();
+  message("fix sequential/pack: packing the container full, then choosing " +
+          std::to_string(list_.total()) + " particles (" +
+          fabric::to_string(arrangement_) + ") from it");
+  double t0 = MPI_Wtime();
+  fabric::PackingResult res;
+  try {
+    res = fabric::pack(packing_spec());
+  } catch (const std::exception &e) {
+    error->all(FLERR, ("Fix sequential/pack: " + std::string(e.what())).c_str());
+  }
+  const double seconds = MPI_Wtime() - t0;
+  create_atoms(res);
+  const fabric::PackReport report =
+      fabric::pack_report(res, list_, intervals_, container(), seconds);
+  vector_ = fabric::vector_values(report.vector);
+  if (comm->me == 0) {
+    message(summary_text(report, res));
+    for (const std::string &w : fabric::pack_warnings(report, res, list_,
+                                                      porosity_, arrangement_))
+      error->warning(FLERR, ("Fix sequential/pack: " + w).c_str());
+  }
+  check_neighbours(res);
+}
+
+fabric::PackingSpec FixSequentialPack::packing_spec() {
+  fabric::PackingSpec spec =
+      fabric::packing_spec(list_, container().lo, container().hi);
   spec.arrangement = arrangement_;
   spec.seed = static_cast<std::uint64_t>(seed_);
   spec.fill_pores = fill_pores_;
@@ -368,8 +359,12 @@ void FixSequentialPack::insert_specimen() {
                packed, total);
       message(b);
     };
-  // Atoms already in the container (another packing, or this fix under a
-  // new ID after read_restart) are not seen by the packer.
+  return spec;
+}
+
+// Atoms already in the container (another packing, or this fix under a new
+// ID after read_restart) are not seen by the packer.
+void FixSequentialPack::warn_atoms_inside() {
   bigint inside_local = 0, inside = 0;
   for (int i = 0; i < atom->nlocal; ++i) {
     bool in = true;
@@ -378,26 +373,17 @@ void FixSequentialPack::insert_specimen() {
     inside_local += in;
   }
   MPI_Allreduce(&inside_local, &inside, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (inside > 0 && comm->me == 0) {
-    char w[256];
-    snprintf(w, sizeof w,
-             "Fix sequential/pack: %lld atoms already lie in container '%s'; "
-             "the packing does not see them and will overlap them",
-             static_cast<long long>(inside), region_id_.c_str());
-    error->warning(FLERR, w);
-  }
-  message("fix sequential/pack: packing the container full, then choosing " +
-          std::to_string(list_.total()) + " particles (" +
-          fabric::to_string(arrangement_) + ") from it");
-  double t0 = MPI_Wtime();
-  fabric::PackingResult res;
-  try {
-    res = fabric::pack(spec);
-  } catch (const std::exception &e) {
-    error->all(FLERR, ("Fix sequential/pack: " + std::string(e.what())).c_str());
-  }
-  double seconds = MPI_Wtime() - t0;
+  if (inside == 0 || comm->me != 0) return;
+  char w[256];
+  snprintf(w, sizeof w,
+           "Fix sequential/pack: %lld atoms already lie in container '%s'; "
+           "the packing does not see them and will overlap them",
+           static_cast<long long>(inside), region_id_.c_str());
+  error->warning(FLERR, w);
+}
 
+// Each rank creates the placed spheres inside its subdomain.
+void FixSequentialPack::create_atoms(const fabric::PackingResult &res) {
   // Tags follow the placement order after the largest existing tag, so every
   // rank count gives each sphere the same ID.
   tagint maxtag_local = 0, maxtag = 0;
@@ -439,67 +425,24 @@ void FixSequentialPack::insert_specimen() {
     atom->map_init();
     atom->map_set();
   }
-  print_summary(res, seconds);
-  check_neighbours(res);
 }
 
 void FixSequentialPack::check_neighbours(const fabric::PackingResult &res) {
-  const long long n = res.placed();
-  if (n < 2) return;
   const int one = neighbor->oneatom;
   const double skin = neighbor->skin;
   const double cdf = std::max(1.0, neighbor->contactDistanceFactor);
-  double rmax = 0.0, rmin = INFINITY;
-  for (double r : res.radius) rmax = std::max(rmax, r), rmin = std::min(rmin, r);
-  // LIGGGHTS lists j for grain i when |x_i - x_j| <= (r_i + r_j) cdf + skin
-  // (granular_bin_no_newton). A safe bound first: every such neighbour lies
-  // wholly inside the ball of radius (2 rmax) cdf + rmax + skin around the
-  // coarsest grain and holds at least a finest grain's volume.
-  const double reach_max = 2.0 * rmax * cdf + rmax + skin;
-  if (std::pow(reach_max / rmin, 3) <= one) return;
-
-  // The count from the specimen, for every grain of at least half the
-  // coarsest radius (the count grows with the grain's size). Per grain the
-  // gaps are kept to tell which skin the present 'one' allows.
-  std::vector<double> class_radius(list_.diameter.size());
-  for (size_t k = 0; k < class_radius.size(); ++k)
-    class_radius[k] = 0.5 * list_.diameter[k];
-  fabric::SphereGrid grid(fabric::Vec3(lo_[0], lo_[1], lo_[2]),
-                          fabric::Vec3(hi_[0], hi_[1], hi_[2]), class_radius,
-                          std::max<std::size_t>(1u << 16, res.centre.size()));
-  for (long long i = 0; i < n; ++i) grid.insert(res.centre[i], res.size_class[i]);
-  // With the skin that leaves the list a margin of 1.5 for compaction.
+  if (fabric::neighbours_surely_fit(res.radius, skin, cdf, one)) return;
+  // Per grain also the skin that leaves the list a margin of 1.5 for
+  // compaction with the present 'one'.
   const long long keep = std::max<long long>(1, static_cast<long long>(one / 1.5));
-  long long worst = 0;
-  double worst_d = 0.0, skin_ok = INFINITY;
-  std::vector<int> near;
-  std::vector<double> gap;
-  for (long long i = 0; i < n; ++i) {
-    const double ri = res.radius[i];
-    if (ri < 0.5 * rmax) continue;
-    near.clear();
-    gap.clear();
-    grid.within_gap(res.centre[i], ri,
-                    skin + (cdf - 1.0) * (ri + rmax) + 1e-12 * rmax, near);
-    for (int j : near) {
-      if (j == i) continue;
-      const fabric::Vec3 d = grid.centre(j) - res.centre[i];
-      // the skin that takes this neighbour into i's list
-      gap.push_back(std::sqrt(d.dot(d)) - (ri + grid.radius(j)) * cdf);
-    }
-    long long count = 0;
-    for (double g : gap) count += g <= skin;
-    if (count > worst) worst = count, worst_d = 2.0 * ri;
-    if (static_cast<long long>(gap.size()) > keep) {
-      std::nth_element(gap.begin(), gap.begin() + keep, gap.end());
-      skin_ok = std::min(skin_ok, gap[keep]);
-    }
-  }
-  if (worst <= one) return;
+  const fabric::NeighbourCount count = fabric::count_neighbours(
+      res, list_.diameter, container(), skin, cdf, keep);
+  if (count.most <= one) return;
   // Suggest a list that holds 1.5 times the count (compaction, rounding),
   // rounded up to hundreds; the page must hold 10 lists (Neighbor::init).
-  const long long need = (static_cast<long long>(1.5 * worst) + 99) / 100 * 100;
+  const long long need = (static_cast<long long>(1.5 * count.most) + 99) / 100 * 100;
   const long long page = std::max<long long>(neighbor->pgsize, 10 * need);
+  const double skin_ok = count.skin_for_keep;
   std::string skin_hint;
   if (std::isfinite(skin_ok) && skin_ok > 0.0 && skin_ok < skin)
     skin_hint = ", or keep 'one " + std::to_string(one) +
@@ -512,103 +455,56 @@ void FixSequentialPack::check_neighbours(const fabric::PackingResult &res) {
            "LIGGGHTS' neighbour list holds per grain (neigh_modify one %d, "
            "page %d); the run would stop with 'Neighbor list overflow'. Add "
            "'neigh_modify one %lld page %lld' before the run%s",
-           worst_d, worst, skin, one, neighbor->pgsize, need, page,
+           count.diameter, count.most, skin, one, neighbor->pgsize, need, page,
            skin_hint.c_str());
   error->all(FLERR, b);
 }
 
-// Below this size assortativity (in the interior) a layer-wise specimen is
-// reported as not layered: discrete specimens measure -0.15 to -0.17 there
-// (a random packing of the same grains gives the same within 0.025 over the
-// container, bench/random_reference).
-static constexpr double kLayeredAssortativity = 0.1;
-
-void FixSequentialPack::print_summary(const fabric::PackingResult &res,
-                                      double seconds) {
-  const size_t n = intervals_.size();
-  double vol = (hi_[0] - lo_[0]) * (hi_[1] - lo_[1]) * (hi_[2] - lo_[2]);
-  std::vector<double> placed_mass(n, 0.0);
-  double placed_vol = 0.0;
-  for (long long i = 0; i < res.placed(); ++i) {
-    double v = fabric::sphere_volume(2.0 * res.radius[i]);
-    placed_vol += v;
-    placed_mass[res.size_class[i]] += v;
-  }
-  // Porosity by volume (exact sphere-box intersection), never by centres:
-  // the interior is the container less one coarsest diameter per wall.
-  fabric::Box box{fabric::Vec3(lo_[0], lo_[1], lo_[2]),
-                  fabric::Vec3(hi_[0], hi_[1], hi_[2])};
-  fabric::PackingMeasure measure(res.centre, res.radius, box);
-  double layer = intervals_.back().d_mean, interior = NAN, wall = NAN;
-  double interior_assortativity = NAN;
-  double narrow = std::min({hi_[0] - lo_[0], hi_[1] - lo_[1], hi_[2] - lo_[2]});
-  if (layer < 0.5 * narrow) {
-    interior = measure.interior_porosity(layer);
-    wall = measure.wall_layer_porosity(layer);
-    interior_assortativity =
-        measure.size_assortativity(measure.interior(layer));
-  }
-  double achieved = 1.0 - placed_vol / vol;
-  long long not_placed = res.unplaced();
-  // Contacts before loading, as the paper counts them: touching grains and
-  // walls (gap below 1e-9 of the smaller radius), no force involved.
-  const std::vector<int> contacts = measure.contact_counts();
-  long long few = 0, total_contacts = 0;
-  double held_vol = 0.0;  // solid volume of the grains with 3 contacts or more
-  for (size_t i = 0; i < contacts.size(); ++i) {
-    few += (contacts[i] < 3), total_contacts += contacts[i];
-    if (contacts[i] >= 3) held_vol += fabric::sphere_volume(2.0 * res.radius[i]);
-  }
-  const double few_pct = contacts.empty() ? 0.0 : 100.0 * few / contacts.size();
-  const double per_grain = contacts.empty() ? 0.0 : double(total_contacts) / contacts.size();
-  summary_[0] = res.placed();
-  summary_[1] = list_.total();
-  summary_[2] = achieved;
-  summary_[3] = interior;
-  summary_[4] = wall;
-  summary_[5] = seconds;
-  summary_[6] = few_pct;
-  summary_[7] = per_grain;
-  summary_[8] = placed_vol > 0 ? 100.0 * held_vol / placed_vol : 0.0;
-  // How the sizes are arranged: like sizes touching (LA) or mixed (DA).
-  const double assortativity = measure.size_assortativity();
-  summary_[9] = assortativity;
-  summary_[10] = measure.radius_distance_spearman();
-  summary_[11] = interior_assortativity;
-  if (comm->me != 0) return;
+// The summary on the screen and in the log: the settings, per interval
+// what was asked and placed, then the figures of the specimen.
+std::string FixSequentialPack::summary_text(const fabric::PackReport &report,
+                                            const fabric::PackingResult &res) {
   std::ostringstream s;
   s.unsetf(std::ios::fixed);
   s.precision(5);
+  std::string start = fabric::to_string(start_);
+  if (start_ == fabric::Start::automatic)
+    start += " (" + fabric::to_string(res.start) +
+             (res.unplaced_with_two_fronts > 0
+                  ? ": two fronts left " +
+                        std::to_string(res.unplaced_with_two_fronts) +
+                        " grains unplaced, one front less volume"
+                  : std::string()) +
+             ")";
   s << "fix sequential/pack summary\n"
     << "  PSD " << psd_file_ << ": " << psd_->points().size()
     << " points, d10 = " << psd_->d10() << ", d60 = " << psd_->d60()
     << ", Cu = " << psd_->uniformity_coefficient() << "\n"
-    << "  container " << region_id_ << ": volume " << vol << ", arrangement "
-    << fabric::to_string(arrangement_) << ", start " << fabric::to_string(start_)
-    << (start_ == fabric::Start::automatic
-            ? " (" + fabric::to_string(res.start) +
-                  (res.unplaced_with_two_fronts > 0
-                       ? ": two fronts left " +
-                             std::to_string(res.unplaced_with_two_fronts) +
-                             " grains unplaced, one front less volume"
-                       : std::string()) +
-                  ")"
-            : std::string())
-    << ", seed " << seed_ << ", " << n << " equal-mass intervals\n"
+    << "  container " << region_id_ << ": volume " << report.container_volume
+    << ", arrangement " << fabric::to_string(arrangement_) << ", start "
+    << start << ", seed " << seed_ << ", " << intervals_.size()
+    << " equal-mass intervals\n"
     << "  interval   d_mean       target    count   placed  not_placed  "
        "mass%PSD  mass%placed\n";
-  for (size_t k = 0; k < n; ++k) {
+  for (size_t k = 0; k < intervals_.size(); ++k) {
     char row[160];
     snprintf(row, sizeof row, "  %8zu %9.4g %12.2f %8lld %8lld %11lld %9.2f %12.2f\n",
              k + 1, intervals_[k].d_mean, list_.target_count[k],
              list_.count[k], res.placed_per_class[k], res.unplaced_per_class[k],
              100.0 * intervals_[k].mass_fraction,
-             placed_vol > 0 ? 100.0 * placed_mass[k] / placed_vol : 0.0);
+             report.placed_mass_percent[k]);
     s << row;
   }
+  return s.str() + summary_figures(report, res);
+}
+
+std::string FixSequentialPack::summary_figures(
+    const fabric::PackReport &report, const fabric::PackingResult &res) {
+  const fabric::PackVector &v = report.vector;
+  auto signed_or = [](double x, const char *none) {
+    return std::isfinite(x) ? fmt("%+.3f", x) : std::string(none);
+  };
   char b[2048];
-  double list_porosity = 1.0 - list_.solid_volume() / vol;
-  double natural = 1.0 - res.packed_volume / vol;
   snprintf(b, sizeof b,
            "  particles: %lld in the list, %lld placed (%lld of them into "
            "vacancies by the second loop), %lld not placed\n"
@@ -619,111 +515,28 @@ void FixSequentialPack::print_summary(const fabric::PackingResult &res,
            "the wall layer (%.4g, one coarsest diameter, per wall)\n"
            "  contacts before loading (grains and walls touching, no force): "
            "%.3f per grain; %.2f %% of the grains (%.2f %% of the mass) "
-           "have fewer than 3\n"
+           "have fewer than %d\n"
            "  structure: size assortativity of touching pairs %s, in the "
            "interior %s (0: contact ends paired at random; a random packing "
            "of a graded soil lies below 0, its fines touching coarse grains, "
            "see bench/random_reference; above that: like sizes together), "
            "Spearman(radius, distance from the centre) %s\n"
            "  time: %.3f s (%.0f particles per second)\n",
-           list_.total(), res.placed(), res.placed_in_second_loop, not_placed,
-           natural, res.vacancies, porosity_, list_porosity, achieved,
-           interior, wall, layer, per_grain, few_pct,
-           placed_vol > 0 ? 100.0 - summary_[8] : 0.0,
-           (std::isfinite(summary_[9]) ? fmt("%+.3f", summary_[9])
-                                       : "none (no touching pairs)").c_str(),
-           (std::isfinite(summary_[11]) ? fmt("%+.3f", summary_[11])
-                                        : "none").c_str(),
-           (std::isfinite(summary_[10]) ? fmt("%+.3f", summary_[10])
-                                        : "none (undefined)").c_str(),
-           seconds,
-           seconds > 0 ? res.placed() / seconds : 0.0);
-  s << b;
-  message(s.str());
-  if (not_placed > 0 && natural > porosity_ - 0.01) {
-    // The list does not fit: the target is (nearly) as dense as the
-    // container packed full.
-    snprintf(b, sizeof b,
-             "Fix sequential/pack: %lld of %lld particles not placed (see "
-             "not_placed per interval): the container packed full holds "
-             "porosity %.4f, too close to the target %.4f to hold the whole "
-             "list. Use a porosity of at least %.3f",
-             not_placed, list_.total(), natural, porosity_, natural + 0.015);
-    error->warning(FLERR, b);
-  } else if (not_placed > 0) {
-    // There was room, but not for the last coarse grains under the lid.
-    std::string which;
-    for (size_t k = 0; k < n; ++k)
-      if (res.unplaced_per_class[k] > 0)
-        which += (which.empty() ? "" : ", ") + std::to_string(k + 1);
-    // Rounded as printed, so that the advice agrees with the number shown.
-    double edge = std::round(10.0 *
-                             std::min({hi_[0] - lo_[0], hi_[1] - lo_[1],
-                                       hi_[2] - lo_[2]}) /
-                             intervals_.back().d_mean) / 10.0;
-    double missing_vol = list_.solid_volume() - placed_vol;
-    // Below 6 coarsest diameters the last coarse grains often find no room
-    // under the lid; in wider containers a few can still miss it (LA Cu 2.5
-    // in 8.7: 1-4 of 76,176 with seeds 1-3, also at porosity 0.355), and no
-    // setting is known to place them.
-    std::string advice =
-        edge < 6.0 ? "use at least 6"
-                   : "at least the 6 recommended; another seed or a looser "
-                     "target does not reliably place them";
-    snprintf(b, sizeof b,
-             "Fix sequential/pack: %lld of %lld particles not placed "
-             "(%s %s): the container packed full holds porosity %.4f, "
-             "room enough for the target %.4f, but these grains came too "
-             "late to find a place large enough. They are %.3f %% of the "
-             "list's solid volume (porosity %.4f against the list's %.4f). "
-             "The container is %.1f coarsest diameters wide: %s",
-             not_placed, list_.total(),
-             which.find(',') == std::string::npos ? "interval" : "intervals",
-             which.c_str(), natural, porosity_,
-             100.0 * missing_vol / list_.solid_volume(), achieved,
-             list_porosity, edge, advice.c_str());
-    error->warning(FLERR, b);
-  } else if (std::abs(achieved - porosity_) > 0.005) {
-    snprintf(b, sizeof b,
-             "Fix sequential/pack: every particle is placed; the porosity "
-             "%.4f differs from the target %.4f only because the counts per "
-             "interval are rounded (the list's porosity is %.4f): use a "
-             "larger container for a closer match",
-             achieved, porosity_, list_porosity);
-    error->warning(FLERR, b);
-  }
-  // A layer-wise specimen is judged by its interior: the fine layer the
-  // packing grows on its floor raises the value over the container
-  // (measured in cubes of 6 coarsest diameters, Cu 2.0-3.5: +0.31 to -0.07
-  // over the container, -0.10 to -0.19 in the interior, as discrete).
-  if (arrangement_ == fabric::Arrangement::layerwise) {
-    const bool inner = std::isfinite(summary_[11]);
-    const double a = inner ? summary_[11] : summary_[9];
-    if (std::isfinite(a) && a < kLayeredAssortativity) {
-      snprintf(b, sizeof b,
-               "Fix sequential/pack: the layer-wise specimen is not layered "
-               "%s: the size assortativity of the touching pairs %s is "
-               "%+.3f, below %.1f, as in discrete specimens (-0.15 to -0.17 "
-               "in their interior) and a random packing of the same grains "
-               "(bench/random_reference: -0.13 for Cu 2.0, -0.16 for Cu "
-               "2.5). %s A layer-wise rule that keeps like sizes together "
-               "inside the specimen while placing every grain is not "
-               "reached yet: see 'Structure' in the fix's documentation",
-               inner ? "in its interior" : "(the container has no interior)",
-               inner ? "there" : "over the container", a,
-               kLayeredAssortativity,
-               inner ? ("Over the whole container it is " +
-                        fmt("%+.3f", summary_[9]) +
-                        ": like sizes touch mainly in the layer of fine "
-                        "grains the packing grows on the floor.")
-                           .c_str()
-                     : "");
-      error->warning(FLERR, b);
-    }
-  }
+           list_.total(), res.placed(), res.placed_in_second_loop,
+           report.not_placed, report.packed_full_porosity, res.vacancies,
+           porosity_, report.list_porosity, v.porosity, v.interior_porosity,
+           v.wall_layer_porosity, report.wall_layer, v.contacts_per_grain,
+           v.few_contacts_percent,
+           report.placed_volume > 0 ? 100.0 - v.held_mass_percent : 0.0,
+           fabric::kMinContacts,
+           signed_or(v.size_assortativity, "none (no touching pairs)").c_str(),
+           signed_or(v.interior_size_assortativity, "none").c_str(),
+           signed_or(v.radius_distance_spearman, "none (undefined)").c_str(),
+           v.seconds, v.seconds > 0 ? res.placed() / v.seconds : 0.0);
+  return b;
 }
 
-double FixSequentialPack::compute_vector(int i) { return summary_[i]; }
+double FixSequentialPack::compute_vector(int i) { return vector_[i]; }
 
 /* ---- per-atom interval index ---------------------------------------- */
 

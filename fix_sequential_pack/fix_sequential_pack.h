@@ -1,10 +1,10 @@
 /* fix sequential/pack: a specimen from a PSD and a target porosity by the
    sequential trilateration packing of Galindo-Torres & Scheuermann (see
    docs/fix_sequential_pack.md). A thin adapter: the algorithms live in
-   psd.*, trilateration.*, sphere_grid.* and front_packer.* (no LIGGGHTS
-   include); this class parses the command, runs the packer once at setup on
-   every rank (so every rank count gives the same specimen), and creates on
-   each rank the atoms inside its subdomain. */
+   psd.*, trilateration.*, sphere_grid.*, front_packer.* and its outputs in
+   pack_outputs.* (no LIGGGHTS include); this class parses the command, runs
+   the packer once at setup on every rank (so every rank count gives the
+   same specimen), and creates on each rank the atoms inside its subdomain. */
 
 #ifdef FIX_CLASS
 
@@ -20,6 +20,7 @@ FixStyle(sequential/pack,FixSequentialPack)
 
 #include "fix.h"
 #include "front_packer.h"
+#include "pack_outputs.h"
 #include "psd.h"
 
 namespace LAMMPS_NS {
@@ -63,8 +64,21 @@ class FixSequentialPack : public Fix {
 
  private:
   void parse(int narg, char **arg);
+  void read_keywords(const class StyleArgs &);
+  void read_container(const class StyleArgs &);
+  void read_psd(const class StyleArgs &);
+  void check_memory(const class StyleArgs &);
+  void warn_empty_intervals();
+  fabric::Box container() const;
+
   void insert_specimen();
-  void print_summary(const fabric::PackingResult &, double seconds);
+  fabric::PackingSpec packing_spec();
+  void warn_atoms_inside();
+  void create_atoms(const fabric::PackingResult &);
+  std::string summary_text(const fabric::PackReport &,
+                           const fabric::PackingResult &);
+  std::string summary_figures(const fabric::PackReport &,
+                              const fabric::PackingResult &);
   // Stops the run when the specimen's coarse grains have more neighbours
   // (within their radius + a neighbour's radius + the neighbor skin) than
   // LIGGGHTS' neighbour list holds per atom (neigh_modify one).
@@ -81,13 +95,7 @@ class FixSequentialPack : public Fix {
   bool fill_pores_, verbose_;
   fabric::Start start_;
   double layering_;
-  // Global vector (see the command page): placed, listed, porosity of the
-  // container, of its interior, of its wall layer, seconds, % of the grains
-  // with fewer than 3 contacts before loading, contacts per grain, % of the
-  // mass in grains with 3 or more, size assortativity of touching pairs,
-  // Spearman(radius, distance from the centre), size assortativity of the
-  // touching pairs in the interior.
-  double summary_[12];
+  std::vector<double> vector_;  // the global vector, laid out by pack_outputs.h
   double lo_[3], hi_[3];
   int inserted_;
   double *interval_;  // per atom: interval index 1..N, 0 = not from this fix

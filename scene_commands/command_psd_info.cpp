@@ -1,7 +1,6 @@
 #include "command_psd_info.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -11,6 +10,7 @@
 #include "error.h"
 #include "input.h"
 #include "psd.h"
+#include "style_args.h"
 
 using namespace LAMMPS_NS;
 
@@ -21,14 +21,12 @@ void CommandPsdInfo::command(int narg, char **arg) {
   const std::string file = arg[0];  // input->one() below reuses arg
   int n = 20;
   if (narg == 3) {
+    const StyleArgs args(error, "psd_info", narg - 1, arg + 1, {"intervals"});
     if (strcmp(arg[1], "intervals") != 0)
-      error->all(FLERR, (std::string("psd_info: unknown keyword '") + arg[1] +
-                         "': expected '" + usage + "'").c_str());
-    char *end = nullptr;
-    const long v = strtol(arg[2], &end, 10);
-    if (end == arg[2] || *end != '\0' || v < 1 || v > 100)
-      error->all(FLERR, (std::string("psd_info: intervals ") + arg[2] +
-                         " must be an integer in 1..100").c_str());
+      args.fail("unknown keyword '" + std::string(arg[1]) + "': expected '" +
+                usage + "'");
+    const long v = args.integer(0, "an integer in 1..100");
+    args.require(v >= 1 && v <= 100, 0, "must be an integer in 1..100");
     n = static_cast<int>(v);
   }
   std::vector<fabric::SizeInterval> intervals;
