@@ -26,7 +26,13 @@ except side 3.3, the main job's quick-look size).
 3. The same final state, read from the restart file on 1 rank and on 2 ranks
    with `processors 2 1 1` (the cut goes through the specimen), gets the same
    classes grain by grain, and the same classes as the run itself.
-4. tools/plot_fabric.py draws the paper's figures from the run's output
+4. The scene writes the compute's whole outputs as
+   compute_primary_fabric/fabric_outputs.h defines them (tools/outputs.py
+   reads it): fabric_global.txt a row of the step and the fixed entries
+   plus two per direction bin (the scene's one copy of the fixed count, 31,
+   agrees with the header), fabric_intervals.txt a row per interval (the
+   scene's `intervals`, 20) of the row number and the array's columns.
+5. tools/plot_fabric.py draws the paper's figures from the run's output
    without a warning (no column or vector entry missing).
 """
 import os
@@ -158,8 +164,20 @@ def main():
     chk.check("the specimen carries load: some grains are primary fabric", cls.sum() > 10)
     # The global figures of the compute (fabric_global.txt: step, then the
     # vector) against the recount.
-    gl = [l.split() for l in open(os.path.join(out, "fabric_global.txt"))
-          if l.strip() and not l.startswith("#")]
+    outputs = su.outputs
+    gl = outputs.data_rows(os.path.join(out, "fabric_global.txt"))
+    want_len = outputs.fabric_vector_size(9, args.source)
+    chk.check("fabric_global.txt: step + %d entries (%d fixed in fabric_outputs.h + 2 x 9 "
+              "direction bins), got %d" % (want_len, len(outputs.fabric_vector(args.source)),
+                                           len(gl[-1]) - 1),
+              len(gl[-1]) == 1 + want_len)
+    blocks = outputs.vector_blocks(os.path.join(out, "fabric_intervals.txt"))
+    last = blocks[-1][1] if blocks else []
+    ncols = len(outputs.fabric_array(args.source))
+    chk.check("fabric_intervals.txt: 20 rows of the row number and the %d columns of "
+              "fabric_outputs.h" % ncols,
+              len(last) == 20 and all(len(r) == 1 + ncols for r in last)
+              and [r[0] for r in last] == list(range(1, 21)))
     v = [float(t) for t in gl[-1][1:]]
     n = len(ids)
     primary_mass = 100 * mass[recount == 1].sum() / mass.sum()
