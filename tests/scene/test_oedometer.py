@@ -33,6 +33,9 @@ side 2.75, which still holds the coarsest interval's grains; at rest after
    plus two per direction bin (the scene's one copy of the fixed count, 31,
    agrees with the header), fabric_intervals.txt a row per interval (the
    scene's `intervals`, 20) of the row number and the array's columns.
+   The entries the scene reads by position (the time series, the FABRIC
+   line that tools/oedometer_runs.py reads, the step-0 values of the fix)
+   are the ones their names in the two headers say.
 5. tools/plot_fabric.py draws the paper's figures from the run's output
    without a warning (no column or vector entry missing).
 """
@@ -78,10 +81,42 @@ run 0
 """
 
 
+# What in.oedometer reads by position: (line pattern, the names of its
+# c_pf[N] and f_pack[N] in order of appearance)
+SCENE_POSITIONS = [
+    (r"^variable loose_pct .*", ["loose_percent_by_number"], ["few_contacts_percent"]),
+    (r"^variable primary_pct .*", ["primary_percent_by_mass"], ["held_mass_percent"]),
+    (r"^variable contacts .*", ["coordination"], ["contacts_per_grain"]),
+    (r"^fix series .*", ["overlapping_zone_percent"], []),
+    (r'^print "FABRIC: .*', ["loose_percent_by_number", "primary_percent_by_mass", "r1", "r2",
+                             "overlapping_zone_percent"], []),
+    (r'^print "BEFORE LOADING: .*', [], ["contacts_per_grain", "few_contacts_percent",
+                                          "held_mass_percent"]),
+]
+
+
+def check_scene_positions(args, chk):
+    """The scene's c_pf[N] and f_pack[N] name the entries it means."""
+    outputs = su.outputs
+    text = open(os.path.join(args.source, "input_scripts", "in.oedometer")).read()
+    pf = {e.position: e.name for e in outputs.fabric_vector(args.source)}
+    pack = {e.position: e.name for e in outputs.pack_vector(args.source)}
+    wrong = []
+    for pattern, want_pf, want_pack in SCENE_POSITIONS:
+        line = re.search(pattern, text, re.M)
+        got_pf = [pf.get(int(n)) for n in re.findall(r"c_pf\[(\d+)\]", line.group(0))] if line else None
+        got_pack = [pack.get(int(n)) for n in re.findall(r"f_pack\[(\d+)\]", line.group(0))] if line else None
+        if got_pf != want_pf or got_pack != want_pack:
+            wrong.append("%s: c_pf %s f_pack %s, meant %s %s" % (pattern, got_pf, got_pack, want_pf, want_pack))
+    chk.check("in.oedometer's c_pf[N] and f_pack[N] are the entries of fabric_outputs.h and "
+              "pack_outputs.h it means", not wrong, "\n".join(wrong))
+
+
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
     chk = su.Checker()
+    check_scene_positions(args, chk)
     out = os.path.join(args.work, "run")
     res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
                           variables={"out": out, "every": 2000, "side": 2.75},
