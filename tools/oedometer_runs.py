@@ -25,26 +25,12 @@ import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import outputs  # noqa: E402  (the compute's output tables)
+
 RESULT_FIELDS = ["wall_s", "steps", "at_rest", "lid_stress_Pa", "primary_mass_pct",
                  "loose_number_pct", "oz_mass_pct", "oz_tolerant_mass_pct",
                  "fabric_anisotropy", "force_anisotropy", "grains"]
-
-
-def vector_positions():
-    """0-based positions of the compute's global vector entries, by name,
-    from compute_primary_fabric/fabric_outputs.h (the one layout table)."""
-    path = os.path.join(ROOT, "compute_primary_fabric", "fabric_outputs.h")
-    body = open(path).read().split("#define FABRIC_VECTOR_ENTRIES(X)")[1].split("\n\n")[0]
-    return {n: int(p) - 1 for p, n in re.findall(r'X\((\d+), (\w+), "', body)}
-
-
-def read_global(path):
-    """The last global vector in fabric_global.txt (fix ave/time, scalar mode:
-    one row "step v1 v2 ..."), or None."""
-    if not os.path.exists(path):
-        return None
-    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
-    return [float(v) for v in rows[-1][1:]] if rows else None
 
 
 def run_scene(rundir, variables, ranks=1):
@@ -81,12 +67,12 @@ def run_scene(rundir, variables, ranks=1):
            "loose_number_pct": "%.2f" % float(fab.group(1)),
            "oz_mass_pct": "%.2f" % float(fab.group(3)),
            "grains": grains.group(1) if grains else ""}
-    v = read_global(os.path.join(rundir, "fabric_global.txt"))
-    pos = vector_positions()
+    v = outputs.read_global(os.path.join(rundir, "fabric_global.txt"))
+    pos = outputs.index(outputs.fabric_vector())
     for field, name, fmt in (("oz_tolerant_mass_pct", "overlapping_zone_tolerant_percent", "%.2f"),
                              ("fabric_anisotropy", "fabric_anisotropy", "%.4f"),
                              ("force_anisotropy", "force_anisotropy", "%.4f")):
-        row[field] = fmt % v[pos[name]] if v and name in pos and len(v) > pos[name] else ""
+        row[field] = fmt % v[pos[name]] if v is not None else ""
     return row
 
 

@@ -45,14 +45,14 @@ import time
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import oedometer_runs  # noqa: E402
+from soils import RULES, SOILS, TAG, psd_path  # noqa: E402
 
-SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
-RULES = ["discrete", "layerwise"]
+ARRANGEMENTS = [rule for rule, _ in RULES]
 FIELDS = ["name", "rule", "soil", "side", "seed", "ranks"] + oedometer_runs.RESULT_FIELDS
 
 
 def name_of(rule, soil, side, seed, ranks=1):
-    return "%s_%s_side%s_seed%s%s" % ("DA" if rule == "discrete" else "LA", soil, side, seed,
+    return "%s_%s_side%s_seed%s%s" % (TAG[rule], soil, side, seed,
                                       "_ranks%d" % ranks if ranks > 1 else "")
 
 
@@ -64,7 +64,7 @@ def main():
     ap.add_argument("--sides", nargs="*")
     ap.add_argument("--seeds", nargs="*")
     ap.add_argument("--soils", nargs="*")
-    ap.add_argument("--rules", nargs="*", choices=RULES)
+    ap.add_argument("--rules", nargs="*", choices=ARRANGEMENTS)
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--var", nargs="*", default=[], metavar="NAME=VALUE")
     ap.add_argument("--jobs", type=int, default=2)
@@ -76,21 +76,21 @@ def main():
     if a.small + a.trend + a.convergence > 1:
         ap.error("give one of --small, --trend, --convergence")
     if a.small:
-        rules, soils, sides, seeds = RULES, ["cu2.0", "cu2.5"], ["3.3"], ["1"]
+        rules, soils, sides, seeds = ARRANGEMENTS, SOILS[:2], ["3.3"], ["1"]
     elif a.trend:
         # kappa fixed for both soils (K_n = kappa stress d_N); the default's
         # fixed K_n is 1.6 times softer, relative to the load, for Cu 2.5
-        rules, soils, sides, seeds = ["discrete"], ["cu2.0", "cu2.5"], ["5.5"], ["1"]
+        rules, soils, sides, seeds = ["discrete"], SOILS[:2], ["5.5"], ["1"]
         extra = {"kappa": "1963", "overlap_max": "0.2"}
     elif a.convergence:
         rules, soils, sides, seeds = ["discrete"], ["cu2.5"], ["3.3", "4.4", "5.5"], ["1", "2", "3"]
     else:
-        rules, soils, sides, seeds = RULES, SOILS, ["5.5"], ["1", "2", "3"]
+        rules, soils, sides, seeds = ARRANGEMENTS, SOILS, ["5.5"], ["1", "2", "3"]
     rules, soils = a.rules or rules, a.soils or soils
     sides, seeds = a.sides or sides, a.seeds or seeds
     for s in soils:
-        if not os.path.exists(os.path.join(ROOT, "input_scripts", "psd", s + ".txt")):
-            ap.error("no PSD file input_scripts/psd/%s.txt" % s)
+        if not os.path.exists(psd_path(s, ROOT)):
+            ap.error("no PSD file %s" % psd_path(s))
     os.makedirs(a.out, exist_ok=True)
     csv_path = os.path.join(a.out, "study.csv")
     for nv in a.var:
@@ -114,7 +114,7 @@ def main():
         name = name_of(*m)
         row = oedometer_runs.run_scene(
             os.path.join(a.out, "runs", name),
-            {"psd": "input_scripts/psd/%s.txt" % soil, "arrangement": rule,
+            {"psd": psd_path(soil), "arrangement": rule,
              "side": side, "seed": seed, **extra}, ranks)
         count[0] += 1
         if row is None:

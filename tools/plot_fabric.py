@@ -8,17 +8,17 @@ input_scripts/in.oedometer, overlaid like the paper's LA vs DA curves.
 
 Reads from each OUTDIR
   fabric_series.txt     (required) time series: Figs. 11, 12
-  fabric_intervals.txt  (required) per-interval table, last block: Figs. 13,
-                        14, 17/18, 19
+  fabric_intervals.txt  (required) the compute's global array, last block:
+                        Figs. 13, 14, 17/18, 19
   fabric_global.txt     (optional) the compute's global vector: r1, r2
                         (radii), the OZ, the fabric tensors and the direction
-                        bins; positions from compute_primary_fabric/
-                        fabric_outputs.h, the compute's own layout table
-  contacts_*.vtp        (optional) the force network, used for the direction
-                        histogram when fabric_global.txt does not hold the
-                        global vector (see below)
+                        bins, Figs. 15/16 and the shaded zone of Figs. 17/18
   log*/*.log            (optional) a LIGGGHTS log with the in.oedometer line
                         "TIMESTEP: ... dt = X s", to plot against time
+The compute's columns and entries are found by their names in
+compute_primary_fabric/fabric_outputs.h (tools/outputs.py reads it); the
+tool computes none of them again: without fabric_global.txt a run has no
+overlapping zone and no direction histogram in the figures.
 
 Writes into --png-dir (default: OUTDIR for one run; for several, the folder
 fabric_plots beside the first OUTDIR, e.g. out/fabric_plots) and prints the
@@ -33,20 +33,6 @@ path of every PNG written:
   fig15_16_direction_rose.png   contact fraction and mean normal force by
                                 polar angle from z (2-D rose)
 
-fabric_global.txt: LIGGGHTS 3.8's fix ave/time, in mode vector, replaces a
-bare c_ID whose compute also has a global array by the array's columns
-(fix_ave_time.cpp), so "fix ave/time ... c_pf mode vector" writes the
-per-interval array again, not the global vector. The tool recognises both:
-a block of one-value rows, or a single row of >= 31 values (scalar mode,
-c_pf[1] ... c_pf[49]), is the global vector; an 8-column block is the array.
-Without the vector, r1/r2 are found from fabric_intervals.txt by their
-definition (finest interval with primary mass, coarsest with loose mass,
-half its diameter) and the direction histogram is recomputed from the last
-contacts_*.vtp: particle contacts only (the compute's default
-walls_in_fabric no), loaded if the normal force exceeds 1e-3 of the mean
-normal force of these contacts (the compute's default relative threshold,
-whose mean also includes wall contacts), 9 bins of 10 degrees.
-
 Exit status: 0 on success; 2 on a usage error or when a required file is
 missing or empty (nothing is drawn then).
 """
@@ -56,7 +42,6 @@ import math
 import os
 import re
 import sys
-import xml.etree.ElementTree as ET
 
 import matplotlib
 matplotlib.use("Agg")
@@ -64,43 +49,15 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import outputs  # noqa: E402  (the compute's output tables)
+
 PROG = "plot_fabric.py"
 
 SERIES_COLS = ["step", "KE(J)", "sigma_lid(Pa)", "loose%number",
                "primary%mass", "coordination", "OZ%mass"]
 
-# The compute's output layout, defined once in
-# compute_primary_fabric/fabric_outputs.h: X(position, name, "meaning") lines.
-LAYOUT_HEADER = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
-                             "compute_primary_fabric", "fabric_outputs.h")
-
-
-def read_layout(path=LAYOUT_HEADER):
-    """{'vector': [(position, name)], 'array': [(position, name)]} from the
-    header's FABRIC_VECTOR_ENTRIES and FABRIC_ARRAY_COLUMNS tables."""
-    with open(path) as f:
-        text = f.read()
-    out = {}
-    for key, macro in (("vector", "FABRIC_VECTOR_ENTRIES"), ("array", "FABRIC_ARRAY_COLUMNS")):
-        body = text.split("#define %s(X)" % macro)[1].split("\n\n")[0]
-        out[key] = [(int(p), n) for p, n in re.findall(r'X\((\d+), (\w+), "', body)]
-        if [p for p, _ in out[key]] != list(range(1, len(out[key]) + 1)):
-            raise SystemExit("%s: %s is not numbered 1..n" % (path, macro))
-    return out
-
-
-LAYOUT = read_layout()
-VEC = {name: pos - 1 for pos, name in LAYOUT["vector"]}   # 0-based entry
-N_VECTOR_FIXED = len(LAYOUT["vector"])          # entries before the direction bins
-# fabric_intervals.txt columns: "row", then the array's columns under the
-# labels of in.oedometer's title line
-ARRAY_LABELS = {"diameter": "diameter(m)", "mass_percent": "mass%",
-                "primary_percent_of_interval": "primary%ofinterval",
-                "loose_mass_percent": "loose%mass",
-                "loaded_contacts_per_particle": "contacts/particle",
-                "normal_force_per_loaded_contact": "force/contact(N)",
-                "primary_mass_percent": "primary%mass", "particles": "particles"}
-INTERVAL_COLS = ["row"] + [ARRAY_LABELS[name] for _, name in LAYOUT["array"]]
+VEC = outputs.index(outputs.fabric_vector())   # 0-based entry by name
 TENSOR = ("xx", "yy", "zz", "xy", "xz", "yz")
 
 
@@ -153,94 +110,16 @@ def read_series(path):
     return {names[i]: data[:, i] for i in range(ncol)}
 
 
-def read_blocks(path):
-    """fix ave/time mode-vector file -> list of (step, 2-D array).
-    An incomplete last block (a run still writing) is dropped."""
-    lines = list(_data_lines(path))
-    blocks = []
-    i = 0
-    while i < len(lines):
-        w = lines[i]
-        if len(w) != 2:
-            raise InputError("%s: expected a block header 'step nrows', got '%s'"
-                             % (path, " ".join(w)))
-        step, nrows = int(float(w[0])), int(float(w[1]))
-        rows = lines[i + 1:i + 1 + nrows]
-        if len(rows) < nrows:
-            warn("%s: last block (step %d) is incomplete, ignored" % (path, step))
-            break
-        ncol = min(len(r) for r in rows) if rows else 0
-        arr = np.array([[float(x) for x in r[:ncol]] for r in rows]) if rows \
-            else np.zeros((0, 0))
-        blocks.append((step, arr))
-        i += 1 + nrows
-    return blocks
-
-
 def read_intervals(path):
-    blocks = read_blocks(path)
-    if not blocks:
+    """The last block of fabric_intervals.txt: {column name of
+    fabric_outputs.h: array}, 'step', 'nblocks'."""
+    try:
+        iv = outputs.read_intervals(path)
+    except ValueError as e:
+        raise InputError(str(e))
+    if iv is None:
         raise InputError("%s: no data block (the final analysis has not run yet)" % path)
-    step, arr = blocks[-1]
-    ncols = len(INTERVAL_COLS)
-    if arr.ndim != 2 or arr.shape[0] == 0 or arr.shape[1] < ncols:
-        raise InputError("%s: the last block (step %d) does not have the %d columns %s"
-                         % (path, step, ncols, " ".join(INTERVAL_COLS)))
-    names = _title_columns(path)
-    if not names or len(names) < ncols:
-        names = INTERVAL_COLS
-    d = {names[i]: arr[:, i] for i in range(ncols)}
-    d["step"] = step
-    d["nblocks"] = len(blocks)
-    return d
-
-
-def read_global_vector(path):
-    """The compute's global vector, or None if the file holds something else."""
-    lines = list(_data_lines(path))
-    if not lines:
-        return None
-    if len(lines[0]) >= 1 + N_VECTOR_FIXED:          # scalar mode: step v1 v2 ...
-        return np.array([float(x) for x in lines[-1][1:]])
-    blocks = read_blocks(path)
-    if not blocks:
-        return None
-    step, arr = blocks[-1]
-    if arr.ndim == 2 and arr.shape[1] == 2 and arr.shape[0] >= N_VECTOR_FIXED:
-        return arr[:, 1].copy()
-    return None
-
-
-def read_vtp_contacts(path):
-    """contacts_*.vtp of dump local/gran/vtk (ascii) -> x1, x2, force (n x 3)."""
-    root = ET.parse(path).getroot()
-    piece = root.find("PolyData/Piece")
-    if piece is None:
-        raise InputError("%s: no PolyData piece" % path)
-
-    def arr(parent, name):
-        if parent is None:
-            return None
-        for da in parent.findall("DataArray"):
-            if da.get("Name") == name:
-                if da.get("format", "ascii") != "ascii":
-                    raise InputError("%s: array %s is not ascii" % (path, name))
-                nc = int(da.get("NumberOfComponents", "1"))
-                v = np.array((da.text or "").split(), dtype=float)
-                return v.reshape(-1, nc) if nc > 1 else v
-        return None
-
-    nlines = int(piece.get("NumberOfLines", "0"))
-    if nlines == 0:
-        return np.zeros((0, 3)), np.zeros((0, 3)), np.zeros((0, 3))
-    pts = arr(piece.find("Points"), "Points").reshape(-1, 3)
-    conn = arr(piece.find("Lines"), "connectivity").astype(int)
-    offs = arr(piece.find("Lines"), "offsets").astype(int)
-    force = arr(piece.find("CellData"), "force")
-    if force is None:
-        raise InputError("%s: no cell array 'force'" % path)
-    starts = np.concatenate(([0], offs[:-1]))
-    return pts[conn[starts]], pts[conn[starts + 1]], force.reshape(-1, 3)
+    return iv
 
 
 def find_dt(outdir):
@@ -258,65 +137,6 @@ def find_dt(outdir):
     return None
 
 
-def last_numbered(outdir, pattern):
-    files = glob.glob(os.path.join(outdir, pattern))
-    num = []
-    for f in files:
-        m = re.search(r"_(\d+)\.[a-z]+$", os.path.basename(f))
-        if m:
-            num.append((int(m.group(1)), f))
-    return max(num)[1] if num else None
-
-
-# ---------------------------------------------------------------- analysis
-def overlap_from_intervals(iv):
-    """r1, r2 (radii) and OZ % by the compute's definition."""
-    d = iv["diameter(m)"]
-    prim = iv["primary%mass"]
-    loose = iv["loose%mass"]
-    kp = np.nonzero(prim > 0)[0]
-    kl = np.nonzero(loose > 0)[0]
-    r1 = 0.5 * d[kp[0]] if len(kp) else 0.0
-    r2 = 0.5 * d[kl[-1]] if len(kl) else 0.0
-    oz = 0.0
-    if len(kp) and len(kl) and kl[-1] >= kp[0]:
-        oz = float(np.sum(iv["mass%"][kp[0]:kl[-1] + 1]))
-    return r1, r2, oz
-
-
-def directions_from_contacts(x1, x2, force, nbins=9, rel_threshold=1e-3):
-    """Direction histogram and fabric tensors of the loaded particle contacts."""
-    out = {"fraction": np.zeros(nbins), "force": np.zeros(nbins),
-           "F": np.zeros(6), "Phi": np.zeros(6), "nloaded": 0}
-    if len(x1) == 0:
-        return out
-    b = x1 - x2
-    length = np.linalg.norm(b, axis=1)
-    ok = length > 0
-    n = b[ok] / length[ok, None]
-    fn = np.einsum("ij,ij->i", force[ok], n)
-    # the sign convention (force on particle 1 or 2) is fixed by the majority:
-    # in a compressed packing most contacts push their particles apart
-    if np.sum(fn[fn > 0]) < -np.sum(fn[fn < 0]):
-        fn = -fn
-    ft = max(0.0, rel_threshold * float(np.mean(fn)))
-    loaded = fn > ft
-    n, fn = n[loaded], fn[loaded]
-    out["nloaded"] = int(loaded.sum())
-    if out["nloaded"] == 0:
-        return out
-    theta = np.degrees(np.arccos(np.clip(np.abs(n[:, 2]), 0.0, 1.0)))
-    k = np.minimum((theta / (90.0 / nbins)).astype(int), nbins - 1)
-    for j in range(nbins):
-        sel = k == j
-        out["fraction"][j] = sel.sum() / float(len(k))
-        out["force"][j] = fn[sel].mean() if sel.any() else 0.0
-    pairs = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)]
-    out["F"] = np.array([np.mean(n[:, a] * n[:, c]) for a, c in pairs])
-    out["Phi"] = np.array([np.sum(fn * n[:, a] * n[:, c]) / np.sum(fn) for a, c in pairs])
-    return out
-
-
 # ---------------------------------------------------------------- a run
 class Run:
     def __init__(self, outdir, label, dt_cli):
@@ -327,59 +147,26 @@ class Run:
         self.iv = read_intervals(os.path.join(outdir, "fabric_intervals.txt"))
         self.dt = dt_cli if dt_cli else find_dt(outdir)
 
-        self.vector = None
         gpath = os.path.join(outdir, "fabric_global.txt")
-        if os.path.isfile(gpath):
-            try:
-                self.vector = read_global_vector(gpath)
-            except InputError as e:
-                warn(str(e))
-            if self.vector is None:
-                warn("%s holds the per-interval array, not the compute's global "
-                     "vector (LIGGGHTS 3.8 fix ave/time expands a bare c_pf in "
-                     "mode vector into the array's columns); r1/r2 come from "
-                     "fabric_intervals.txt, the direction histogram from "
-                     "contacts_*.vtp" % gpath)
-        else:
-            warn("%s: not found; r1/r2 come from fabric_intervals.txt, the "
-                 "direction histogram from contacts_*.vtp" % gpath)
-
-        if self.vector is not None and len(self.vector) >= 9:
-            self.r1, self.r2, self.oz = (float(self.vector[VEC["r1"]]),
-                                         float(self.vector[VEC["r2"]]),
-                                         float(self.vector[VEC["overlapping_zone_percent"]]))
-            self.oz_source = "fabric_global.txt"
-            self.oz_tolerant = None
-            if "overlapping_zone_tolerant_percent" in VEC and \
-                    len(self.vector) > VEC["overlapping_zone_tolerant_percent"]:
-                self.oz_tolerant = tuple(float(self.vector[VEC[k]]) for k in (
-                    "r1_tolerant", "r2_tolerant", "overlapping_zone_tolerant_percent"))
-        else:
-            self.oz_tolerant = None
-            self.r1, self.r2, self.oz = overlap_from_intervals(self.iv)
-            self.oz_source = "fabric_intervals.txt"
-
+        self.vector = outputs.read_global(gpath)
+        self.oz_tolerant = None
         self.dirs = None
-        if self.vector is not None and len(self.vector) >= N_VECTOR_FIXED + 2:
-            v = self.vector
-            m = (len(v) - N_VECTOR_FIXED) // 2
-            bins = v[N_VECTOR_FIXED:N_VECTOR_FIXED + 2 * m].reshape(m, 2)
-            self.dirs = {"fraction": bins[:, 0], "force": bins[:, 1],
-                         "F": np.array([v[VEC["fabric_" + t]] for t in TENSOR]),
-                         "Phi": np.array([v[VEC["force_fabric_" + t]] for t in TENSOR]),
-                         "nloaded": int(v[VEC["loaded_contacts"]]),
-                         "source": "fabric_global.txt"}
-        else:
-            vtp = last_numbered(outdir, "contacts_*.vtp")
-            if vtp is None:
-                warn("%s: no contacts_*.vtp; no direction histogram for this run" % outdir)
-            else:
-                try:
-                    x1, x2, f = read_vtp_contacts(vtp)
-                    self.dirs = directions_from_contacts(x1, x2, f)
-                    self.dirs["source"] = os.path.basename(vtp) + " (recomputed)"
-                except (InputError, ET.ParseError, ValueError) as e:
-                    warn("%s: %s; no direction histogram for this run" % (vtp, e))
+        if self.vector is None:
+            warn("%s: not found or without the compute's global vector; this run has "
+                 "no overlapping zone and no direction histogram in the figures" % gpath)
+            self.r1 = self.r2 = self.oz = 0.0
+            return
+        v = self.vector
+        self.r1, self.r2, self.oz = (float(v[VEC[k]]) for k in (
+            "r1", "r2", "overlapping_zone_percent"))
+        self.oz_tolerant = tuple(float(v[VEC[k]]) for k in (
+            "r1_tolerant", "r2_tolerant", "overlapping_zone_tolerant_percent"))
+        fraction, force = outputs.direction_bins(v)
+        self.dirs = {"fraction": fraction, "force": force,
+                     "F": np.array([v[VEC["fabric_" + t]] for t in TENSOR]),
+                     "Phi": np.array([v[VEC["force_fabric_" + t]] for t in TENSOR]),
+                     "nloaded": int(v[VEC["loaded_contacts"]]),
+                     "source": "fabric_global.txt"}
 
     def x_time(self, use_time):
         step = self.series["step"]
@@ -430,7 +217,7 @@ def fig_per_interval(runs, key, ylabel, title, name, pngdir, written, ylim=None)
         # an interval the packer left empty (a row of zeros, diameter 0) has
         # no per-particle value: left out, the line joins its neighbours
         keep = r.iv["particles"] > 0
-        d = r.iv["diameter(m)"][keep] * 1e3
+        d = r.iv["diameter"][keep] * 1e3
         ax.plot(d, r.iv[key][keep], ms=4, lw=1.4, label=r.label, **style(i))
     log_diameter_axis(ax)
     ax.set_xlabel("interval diameter d (mm), log scale")
@@ -466,10 +253,10 @@ def fig_distributions(runs, pngdir, written):
                              squeeze=False)
     for i, (r, ax) in enumerate(zip(runs, axes[0])):
         keep = r.iv["particles"] > 0        # an empty interval adds no mass
-        d = r.iv["diameter(m)"][keep] * 1e3
-        curves = [("PSD", r.iv["mass%"][keep], "k", "-", "o"),
-                  ("PFD (primary fabric)", r.iv["primary%mass"][keep], "tab:blue", "--", "s"),
-                  ("LPD (loose particles)", r.iv["loose%mass"][keep], "tab:red", ":", "^")]
+        d = r.iv["diameter"][keep] * 1e3
+        curves = [("PSD", r.iv["mass_percent"][keep], "k", "-", "o"),
+                  ("PFD (primary fabric)", r.iv["primary_mass_percent"][keep], "tab:blue", "--", "s"),
+                  ("LPD (loose particles)", r.iv["loose_mass_percent"][keep], "tab:red", ":", "^")]
         for lab, share, c, ls, mk in curves:
             cum, tot = cumulative(share)
             if cum is None:
@@ -514,7 +301,7 @@ def fig_distributions(runs, pngdir, written):
 def fig_rose(runs, pngdir, written):
     have = [(i, r) for i, r in enumerate(runs) if r.dirs is not None]
     if not have:
-        warn("no run has a direction histogram (no global vector, no contacts_*.vtp): "
+        warn("no run has a direction histogram (no global vector): "
              "fig15_16_direction_rose.png not drawn")
         return
     fig, axes = plt.subplots(1, 2, figsize=(11, 5.4), subplot_kw={"projection": "polar"})
@@ -623,15 +410,15 @@ def main(argv=None):
     fig_series(runs, "primary%mass", "primary fabric, % by mass",
                "Fig. 12: primary fabric fraction by mass", "fig12_primary_mass.png",
                pngdir, written)
-    fig_per_interval(runs, "contacts/particle",
+    fig_per_interval(runs, "loaded_contacts_per_particle",
                      "loaded contacts per particle",
                      "Fig. 13: mean contacts per particle per size interval",
                      "fig13_contacts_per_particle.png", pngdir, written)
-    fig_per_interval(runs, "force/contact(N)", "mean normal force per loaded contact (N)",
+    fig_per_interval(runs, "normal_force_per_loaded_contact", "mean normal force per loaded contact (N)",
                      "Fig. 14: mean normal force per contact per size interval",
                      "fig14_force_per_contact.png", pngdir, written)
     fig_distributions(runs, pngdir, written)
-    fig_per_interval(runs, "primary%ofinterval",
+    fig_per_interval(runs, "primary_percent_of_interval",
                      "primary fabric, % of the interval's mass",
                      "Fig. 19: contribution of each interval to the primary fabric",
                      "fig19_primary_of_interval.png", pngdir, written, ylim=(-2, 102))

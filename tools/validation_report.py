@@ -3,7 +3,7 @@
 tools/oedometer_study.py, beside the paper's numbers.
 
     /usr/bin/python3 tools/validation_report.py [--study out/study [DIR ...]]
-        [--side 3.3] [--out docs/validation] [--size CSV ...] [--page docs/validation.md]
+        [--side 3.3] [--out out/validation] [--size CSV ...] [--page docs/validation.md]
 
 Reads STUDY/study.csv (one row per run) and each run's folder
 STUDY/runs/NAME (fabric_global.txt: r1, r2 and their tolerant versions;
@@ -42,8 +42,8 @@ rows of several study CSVs (any rank count: the rank count acts as a seed),
 one row per model with each seed's primary % by mass, and OUT/summary_sideS.png,
 the summary figure of those rows (S: their side). With --matrix and no
 --study, only that: OUT/tables_sideS.md and OUT/summary_sideS.png (and the
-page's matrix block with --page), e.g. from the side-5.5 CSVs kept in
-docs/validation. --label L names a second matrix (runs with other scene
+page's matrix block with --page), e.g. from the side-5.5 CSVs kept under
+results/. --label L names a second matrix (runs with other scene
 settings, e.g. one stiffness number): OUT/tables_sideS_L.md,
 OUT/summary_sideS_L.png and the page block <!-- matrix-L --> (with --study,
 the other blocks too: <!-- tables-L --> and so on).
@@ -67,10 +67,9 @@ import numpy as np
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import oedometer_runs  # noqa: E402
+import outputs  # noqa: E402
 import plot_fabric  # noqa: E402
-
-SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
-RULES = [("layerwise", "LA"), ("discrete", "DA")]
+from soils import RULES, SOILS  # noqa: E402
 # Table 2 of the paper: (r1 mm, r2 mm, OZ % of the mass)
 PAPER_TABLE2 = {
     ("layerwise", "cu2.0"): (0.08, 0.33, 85.0), ("layerwise", "cu2.5"): (0.09, 0.35, 70.0),
@@ -82,12 +81,12 @@ PAPER_TABLE2 = {
 
 def radii(rundir):
     """r1, r2, r1_tolerant, r2_tolerant in mm from the run's last global vector."""
-    v = oedometer_runs.read_global(os.path.join(rundir, "fabric_global.txt"))
-    pos = oedometer_runs.vector_positions()
+    v = outputs.read_global(os.path.join(rundir, "fabric_global.txt"))
+    pos = outputs.index(outputs.fabric_vector())
     names = ("r1", "r2", "r1_tolerant", "r2_tolerant")
-    if not v:
+    if v is None:
         return [float("nan")] * 4
-    return [v[pos[n]] * 1e3 if len(v) > pos[n] else float("nan") for n in names]
+    return [v[pos[n]] * 1e3 for n in names]
 
 
 def loose_before_loading(rundir):
@@ -141,8 +140,7 @@ def interval_primary(rundir):
     from the last block of the run's fabric_intervals.txt, empty intervals
     left out."""
     iv = plot_fabric.read_intervals(os.path.join(rundir, "fabric_intervals.txt"))
-    lab = plot_fabric.ARRAY_LABELS
-    d, m, q = (iv[lab[k]] for k in ("diameter", "mass_percent", "primary_percent_of_interval"))
+    d, m, q = (iv[k] for k in ("diameter", "mass_percent", "primary_percent_of_interval"))
     held = (m > 0) & (d > 0)
     return d[held], m[held], q[held]
 
@@ -332,7 +330,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--study", nargs="+", metavar="DIR")
     ap.add_argument("--side", default="3.3")
-    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "validation"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "validation"),
+                    help="where the tables and figures go (default out/validation)")
     ap.add_argument("--size", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--matrix", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--page", metavar="MD")

@@ -2,7 +2,7 @@
 """The energy limit's knee at the scene's default size, from runs to rest.
 
     /usr/bin/python3 bench/oedometer_chart/knee.py --ref REF_DIR --default DEF_DIR \\
-        [--csv docs/oedometer_chart/knee_side5.5.csv]
+        [--csv out/oedometer_chart/knee_side5.5.csv]
 
 REF_DIR and DEF_DIR are outputs of tools/oedometer_study.py (study.csv and
 runs/NAME/fabric_series.txt): the reference runs with a stricter energy limit
@@ -55,7 +55,8 @@ def main():
     ap.add_argument("--default", required=True)
     ap.add_argument("--ref-vrms", type=float, default=1e-4, help="ke_vrms of the reference runs")
     ap.add_argument("--default-vrms", type=float, default=2e-4, help="ke_vrms of the default runs")
-    ap.add_argument("--csv", default="docs/oedometer_chart/knee_side5.5.csv")
+    ap.add_argument("--csv", default=os.path.join("out", "oedometer_chart", "knee_side5.5.csv"),
+                    help="where the CSV goes (default out/oedometer_chart/knee_side5.5.csv)")
     a = ap.parse_args()
     rows = []
     for d, v, looser in ((a.ref, a.ref_vrms, True), (a.default, a.default_vrms, False)):
@@ -76,6 +77,7 @@ def main():
                                  steps="%d" % s[i, 0], primary_mass_pct="%.2f" % s[i, 5],
                                  loose_number_pct="%.2f" % s[i, 4], at_rest="yes"))
     rows.sort(key=lambda r: (float(r["ke_vrms"]), r["source"], int(r["seed"])))
+    os.makedirs(os.path.dirname(a.csv) or ".", exist_ok=True)
     with open(a.csv, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()

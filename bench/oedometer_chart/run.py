@@ -21,7 +21,8 @@ refined run against the wall time (a point per run, a line per factor), with
 the seed spread of the default as a band. The model choices (MODEL_VARIANTS:
 rolling resistance eta, sliding friction mu, the rolling model, the
 specimen's porosity) go to DIR/model.png, primary % against the value.
-Default DIR: docs/oedometer_chart (the committed CSV and PNGs).
+Default DIR: out/oedometer_chart (the measurements kept with the
+documentation live under results/: give --out for them).
 """
 import argparse
 import os
@@ -253,7 +254,7 @@ def _isnum(x):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "oedometer_chart"),
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "oedometer_chart"),
                     help="where chart.csv and chart.png go")
     ap.add_argument("--runs", default=os.path.join(ROOT, "out", "oedometer_chart"),
                     help="where each run's LIGGGHTS output goes")

@@ -42,6 +42,9 @@ import time
 import numpy as np
 from scipy.spatial import cKDTree
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import soils  # noqa: E402  (the shipped soils)
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 HERE = os.path.dirname(os.path.abspath(__file__))
 LAUNCHER = [os.path.join(ROOT, "build", "liggghts-fabric")]  # --launcher replaces it
@@ -152,7 +155,8 @@ def write_data(path, edge, r, pos, density=2650.0):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--soils", nargs="*", default=["cu2.0", "cu2.5", "cu3.0"])
+    ap.add_argument("--soils", nargs="*", default=soils.SOILS[:3],
+                    help="shipped soils (default the three narrowest: %s)" % " ".join(soils.SOILS[:3]))
     ap.add_argument("--side", type=float, default=4.0)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--phi", type=float, default=0.73,
@@ -166,10 +170,10 @@ def main():
     a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
     for soil in a.soils:
-        psd = os.path.join("input_scripts", "psd", soil + ".txt")
-        if not os.path.exists(os.path.join(ROOT, psd)):
-            sys.exit("unknown soil '%s': no %s (the shipped soils: cu2.0, cu2.5, cu3.0, cu3.5)"
-                     % (soil, psd))
+        psd = soils.psd_path(soil)
+        if soil not in soils.SOILS:
+            sys.exit("unknown soil '%s': no %s (the shipped soils: %s)"
+                     % (soil, psd, ", ".join(soils.SOILS)))
         d = os.path.join(a.out, soil)
         os.makedirs(d, exist_ok=True)
         t0 = time.time()

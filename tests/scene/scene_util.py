@@ -8,6 +8,9 @@ the output and the dumps. CTest runs every test as
                                            --work WORKDIR
 
 and the test passes iff it exits 0. Only the standard library and numpy.
+The outputs of our styles (their positions and names) come from tools/
+(tools/outputs.py, the tables of the C++ headers), as do the soils
+(tools/soils.py).
 """
 
 import argparse
@@ -24,6 +27,11 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA_DIR = os.path.join(HERE, "data")
+# the tools of the repository these tests belong to (the --source of CTest)
+TOOLS_DIR = os.path.join(HERE, os.pardir, os.pardir, "tools")
+sys.path.insert(0, os.path.abspath(TOOLS_DIR))
+import outputs  # noqa: E402
+import soils  # noqa: E402
 
 
 # ---- command line --------------------------------------------------------
@@ -263,29 +271,16 @@ def pack_scene(psd, edge, porosity=0.4, arrangement="discrete", seed=1,
     return text
 
 
-PACK_VECTOR = ("placed", "listed", "porosity", "interior_porosity",
-               "wall_layer_porosity", "seconds", "few_contacts_percent",
-               "contacts_per_grain", "held_mass_percent", "size_assortativity",
-               "radius_distance_spearman", "interior_size_assortativity")
-
-
 def vector_print(fix_id):
-    """Input lines that print the fix's global vector as one line."""
-    text = ""
-    for i in range(len(PACK_VECTOR)):
-        text += "variable        pv%d equal f_%s[%d]\n" % (i + 1, fix_id, i + 1)
-    text += ('print           "PACK_VECTOR %s"\n'
-             % " ".join("${pv%d}" % (i + 1) for i in range(len(PACK_VECTOR))))
-    return text
+    """Input lines that print the fix's global vector as one line
+    (positions from fix_sequential_pack/pack_outputs.h)."""
+    return outputs.pack_vector_print(fix_id)
 
 
 def pack_vector(text):
     """The fix's global vector as printed by vector_print(): a dict by name
-    (the last such line), or None."""
-    found = re.findall(r"^PACK_VECTOR (.*)$", text, re.M)
-    if not found:
-        return None
-    return dict(zip(PACK_VECTOR, (float(v) for v in found[-1].split())))
+    of pack_outputs.h (the last such line), or None."""
+    return outputs.pack_vector_values(text)
 
 
 # ---- reading results -----------------------------------------------------
@@ -369,6 +364,23 @@ def mentions_number(text, value, rel=1e-9):
         if v == value or (value != 0 and abs(v - value) <= rel * abs(value)):
             return True
     return False
+
+
+def warnings_of(text, style):
+    """The WARNING lines that LIGGGHTS printed for our style `style` (e.g.
+    'sequential/pack'), each once: the facts a test reads from them are
+    their numbers (numbers_in), not their wording."""
+    seen = []
+    for line in text.splitlines():
+        if "WARNING:" in line and style in line and line not in seen:
+            seen.append(line)
+    return seen
+
+
+def names_value(text, value, tol):
+    """Whether `text` prints a number within `tol` of `value` (a value
+    printed rounded, e.g. to 3 decimals: tol 6e-4)."""
+    return any(abs(v - value) <= tol for v in numbers_in(text))
 
 
 def max_overlap(x, r, block=512):

@@ -165,17 +165,9 @@ def rich_expected():
 
 
 def layout(source):
-    """(vector entries, array columns) of fabric_outputs.h: lists of
-    (position, name, meaning)."""
-    path = os.path.join(source, "compute_primary_fabric", "fabric_outputs.h")
-    with open(path) as f:
-        text = f.read()
-    out = []
-    for macro in ("FABRIC_VECTOR_ENTRIES", "FABRIC_ARRAY_COLUMNS"):
-        body = text.split("#define %s(X)" % macro)[1].split("\n\n")[0]
-        out.append([(int(p), n, m) for p, n, m in
-                    re.findall(r'X\((\d+), (\w+), "([^"]*)"\)', body)])
-    return out
+    """(vector entries, array columns) of fabric_outputs.h, as
+    tools/outputs.py reads them: lists of (position, name, meaning)."""
+    return su.outputs.fabric_vector(source), su.outputs.fabric_array(source)
 
 
 def check_outputs(args, chk):

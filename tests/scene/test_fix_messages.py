@@ -1,13 +1,20 @@
 #!/usr/bin/python3
-"""Scene test: fix sequential/pack says what is true, and only then.
+"""Scene test: fix sequential/pack warns when, and only when, something is
+wrong, and its warnings and summary carry the right numbers. The facts
+checked are whether a warning of the fix is issued and the values it names
+(read as numbers, compared with the fix's vector, its summary table or the
+settings), never its wording.
 
 1. A near-empty container (porosity 0.999) keeps only a few grains: the
-   fix warns which intervals round to no grain and how much larger the
-   container must be; a well-sized specimen gets no such warning and no
-   'not placed' warning.
+   fix warns, naming the number of intervals that hold no grain (as its
+   summary table counts them), the first of them, their share of the mass
+   (5 % each), and a volume factor above 1 with its cube root (the edge
+   factor). A well-sized specimen gets no warning. A small container that
+   leaves grains unplaced names how many, of how many, its width in
+   coarsest diameters and the 6 it needs.
 2. After read_restart, the same fix ID with other settings keeps the
-   restored specimen and says so, naming both settings; the same settings
-   say nothing.
+   restored specimen (no new grains) and warns naming both settings'
+   porosity, seed and intervals; the same settings give no warning.
 3. The specimen's structure: the summary and f_ID[10] give the size
    assortativity of touching pairs (below 0 for a discrete specimen), f_ID[12]
    that of the interior's pairs. A layer-wise specimen is judged by its
@@ -23,6 +30,8 @@ import scene_util as su
 
 EDGE = 5.6e-3
 FIX = "pack"
+STYLE = "sequential/pack"
+ROUNDED = 6e-4      # the warnings and the summary print 3 decimals
 
 
 def fix_line(psd, porosity, seed):
@@ -31,97 +40,126 @@ def fix_line(psd, porosity, seed):
             % (FIX, psd, su.num(porosity), seed))
 
 
-def main():
-    args = su.parse_args(__doc__)
-    chk = su.Checker()
-    psd = os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt")
-    root = su.fresh_dir(os.path.join(args.work, "fix_messages"))
+def summary_table(text):
+    """{interval: (d_mean, target, count)} from the fix's summary table."""
+    rows = re.findall(r"^\s+(\d+)\s+(\S+)\s+(\S+)\s+(\d+)\s+\d+\s+\d+\s+\S+\s+\S+\s*$",
+                      text, re.M)
+    return {int(k): (float(d), float(t), int(c)) for k, d, t, c in rows}
 
-    # 1. empty intervals
+
+def summary(text):
+    """The fix's summary: from its table's first line to its time line."""
+    lines = text.splitlines()
+    start = [i for i, l in enumerate(lines) if l.strip().startswith("PSD ")]
+    if not start:
+        return ""
+    block = []
+    for l in lines[start[-1]:]:
+        if not l.startswith("  "):
+            break
+        block.append(l)
+    return "\n".join(block)
+
+
+def check_empty_intervals(args, chk, psd, root):
     inp = su.write_file(os.path.join(root, "in.sparse"), su.pack_scene(
         psd, EDGE, porosity=0.999, fix_id=FIX, extra_fix="verbose no"))
     res = su.run_launcher(args, inp)
-    m = re.search(r"WARNING: Fix sequential/pack: (\d+) of 20 intervals hold "
-                  r"no grain.*?at least (\S+) times the volume", res.text)
-    chk.check("porosity 0.999: a warning names the empty intervals and the "
-              "container needed (%s)" % str(m and m.groups()),
-              res.returncode == 0 and m is not None and int(m.group(1)) > 0
-              and float(m.group(2)) > 1.0, res.text[-3000:])
+    table = summary_table(res.text)
+    empty = sorted(k for k, (_, _, count) in table.items() if count == 0)
+    warned = su.warnings_of(res.text, STYLE)
+    nums = su.numbers_in(" ".join(warned))
+    factors = [v for v in nums if v > 1.0 and any(
+        abs(w - v ** (1.0 / 3.0)) <= 0.005 * w for w in nums if w != v)]
+    chk.check("porosity 0.999: %d of %d intervals hold no grain; one warning names "
+              "that count, the first of them (%s), %s %% of the mass and a volume "
+              "factor above 1 with its cube root (%s)"
+              % (len(empty), len(table), empty[:1], 5 * len(empty), factors),
+              res.returncode == 0 and len(table) == 20 and empty and len(warned) == 1
+              and len(empty) in nums and empty[0] in nums and 5.0 * len(empty) in nums
+              and factors, "\n".join(warned) + "\n" + res.text[-3000:])
+
+
+def check_dense(args, chk, psd, root):
     inp = su.write_file(os.path.join(root, "in.dense"), su.pack_scene(
         psd, 6 * 1.603e-3, porosity=0.35, fix_id=FIX, extra_fix="verbose no"))
     res = su.run_launcher(args, inp)
-    chk.check("porosity 0.35 in 6 coarsest diameters: no warning",
-              res.returncode == 0 and "WARNING: Fix sequential/pack"
-              not in res.text, res.text[-3000:])
     vec = su.pack_vector(res.text)
-    line = re.search(r"structure: size assortativity of touching pairs ([-+0-9.]+)",
-                     res.text)
+    chk.check("porosity 0.35 in 6 coarsest diameters: no warning, every grain placed",
+              res.returncode == 0 and not su.warnings_of(res.text, STYLE)
+              and vec is not None and vec["placed"] == vec["listed"], res.text[-3000:])
     chk.check("discrete: f_ID[10], the size assortativity, is below 0 (fines "
-              "between coarse grains) and the summary prints it (%s, %s)"
-              % (vec and vec["size_assortativity"], line and line.group(1)),
-              vec is not None and line is not None
-              and vec["size_assortativity"] < 0.0
-              and abs(float(line.group(1)) - vec["size_assortativity"]) < 6e-4
+              "between coarse grains) and the summary prints it (%s)"
+              % (vec and vec["size_assortativity"]),
+              vec is not None and vec["size_assortativity"] < 0.0
+              and su.names_value(summary(res.text), vec["size_assortativity"], ROUNDED)
               and abs(vec["radius_distance_spearman"]) < 0.1, res.text[-3000:])
+
+
+def check_small(args, chk, psd, root):
     inp = su.write_file(os.path.join(root, "in.small"), su.pack_scene(
         psd, EDGE, porosity=0.35, fix_id=FIX, extra_fix="verbose no"))
     res = su.run_launcher(args, inp)
     vec = su.pack_vector(res.text)
-    missing = vec and vec["listed"] - vec["placed"]
+    if vec is None:
+        chk.check("porosity 0.35 in 3.5 coarsest diameters packs", False, res.text[-3000:])
+        return
+    missing = int(vec["listed"] - vec["placed"])
+    width = round(10 * EDGE / 1.603e-3) / 10
+    named = [w for w in su.warnings_of(res.text, STYLE)
+             if vec["listed"] in su.numbers_in(w)]
     if missing:
-        chk.check("porosity 0.35 in 3.2 coarsest diameters, %d not placed: "
-                  "the warning says the container is too small, not the "
-                  "porosity too low" % missing,
-                  "found no" not in res.text and "too late to find a place"
-                  in res.text and "use at least 6" in res.text
-                  and "Use a porosity" not in res.text, res.text[-3000:])
+        nums = su.numbers_in(" ".join(named))
+        chk.check("porosity 0.35 in %.1f coarsest diameters, %d of %d not placed: one "
+                  "warning names both counts, the width and the 6 diameters needed"
+                  % (width, missing, vec["listed"]),
+                  len(named) == 1 and missing in nums and width in nums and 6 in nums,
+                  "\n".join(named) + res.text[-3000:])
     else:
-        chk.check("porosity 0.35 in 3.2 coarsest diameters, all placed: no "
-                  "not-placed warning", "not placed (" not in res.text)
+        chk.check("porosity 0.35 in %.1f coarsest diameters, all placed: no warning "
+                  "names the list's %d particles" % (width, vec["listed"]), not named,
+                  "\n".join(named))
 
-    # 3. a layer-wise specimen not layered in its interior says so, with
-    # the values of the vector: Cu 3.0 in a cube of 4.5 coarsest diameters
+
+def check_layering(args, chk, root):
+    # a layer-wise specimen not layered in its interior says so, with the
+    # values of the vector: Cu 3.0 in a cube of 4.5 coarsest diameters
     # (32,000 grains), Cu 2.0 at 0.40 in 8.6 (over the container +0.2 or
     # more from the fine floor layer, below 0 inside)
     for soil, edge, porosity in (("cu3.0", 10.4e-3, 0.35),
                                  ("cu2.0", 8.75e-3, 0.40)):
         inp = su.write_file(os.path.join(root, "in.la_" + soil), su.pack_scene(
-            os.path.join(args.source, "input_scripts", "psd", soil + ".txt"),
-            edge, porosity=porosity, arrangement="layerwise", fix_id=FIX,
-            extra_fix="verbose no"))
+            su.soils.psd_path(soil, args.source), edge, porosity=porosity,
+            arrangement="layerwise", fix_id=FIX, extra_fix="verbose no"))
         res = su.run_launcher(args, inp)
         vec = su.pack_vector(res.text)
-        m = re.search(r"WARNING: Fix sequential/pack: the layer-wise specimen "
-                      r"is not layered in its interior: the size assortativity "
-                      r"of the touching pairs there is (\S+), below 0.1.*?"
-                      r"Over the whole container it is ([-+0-9.]+)", res.text)
-        line = re.search(r"structure: size assortativity of touching pairs "
-                         r"(\S+), in the interior (\S+) ", res.text)
         a = vec and vec["size_assortativity"]
         ai = vec and vec["interior_size_assortativity"]
+        warned = su.warnings_of(res.text, STYLE)
         chk.check("layer-wise %s at %s: assortativity %s over the container, "
-                  "%s in the interior: a warning and the summary give both "
+                  "%s in the interior: one warning and the summary name both "
                   "as the vector holds them" % (soil, su.num(porosity), a, ai),
-                  res.returncode == 0 and vec is not None and m is not None
-                  and line is not None and ai < 0.1 and a > ai
-                  and abs(float(m.group(1)) - ai) < 6e-4
-                  and abs(float(m.group(2)) - a) < 6e-4
-                  and abs(float(line.group(1)) - a) < 6e-4
-                  and abs(float(line.group(2)) - ai) < 6e-4,
-                  res.text[-3000:])
+                  res.returncode == 0 and vec is not None and ai < 0.1 and a > ai
+                  and len(warned) == 1
+                  and su.names_value(warned[0], a, ROUNDED)
+                  and su.names_value(warned[0], ai, ROUNDED)
+                  and su.names_value(summary(res.text), a, ROUNDED)
+                  and su.names_value(summary(res.text), ai, ROUNDED),
+                  "\n".join(warned) + res.text[-3000:])
     inp = su.write_file(os.path.join(root, "in.da_cu2.0"), su.pack_scene(
-        os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt"),
-        8.75e-3, porosity=0.40, fix_id=FIX, extra_fix="verbose no"))
+        su.soils.psd_path("cu2.0", args.source), 8.75e-3, porosity=0.40, fix_id=FIX,
+        extra_fix="verbose no"))
     res = su.run_launcher(args, inp)
     vec = su.pack_vector(res.text)
-    chk.check("discrete cu2.0 at 0.4: no layering warning, interior "
-              "assortativity below 0 (%s)"
-              % (vec and vec["interior_size_assortativity"]),
-              res.returncode == 0 and vec is not None
-              and "not layered" not in res.text
-              and vec["interior_size_assortativity"] < 0.0, res.text[-3000:])
+    ai = vec and vec["interior_size_assortativity"]
+    chk.check("discrete cu2.0 at 0.4: interior assortativity %s below 0, no warning "
+              "names it" % ai,
+              res.returncode == 0 and vec is not None and ai < 0.0
+              and not any(su.names_value(w, ai, ROUNDED)
+                          for w in su.warnings_of(res.text, STYLE)), res.text[-3000:])
 
-    # 2. redefinition after read_restart with other settings
+
+def check_restart(args, chk, psd, root):
     restart = os.path.join(root, "packed.restart")
     text = su.header(EDGE)
     text += su.block_region("container", (0, 0, 0), (EDGE, EDGE, EDGE))
@@ -129,8 +167,10 @@ def main():
     text += "run             1\nwrite_restart   %s\n" % restart
     res = su.run_launcher(args, su.write_file(os.path.join(root, "in.write"),
                                               text))
-    chk.check("a specimen is packed and saved", res.returncode == 0
-              and os.path.isfile(restart), res.describe())
+    packed = su.nlocal_stats(res.text)
+    if not chk.check("a specimen is packed and saved", res.returncode == 0 and packed
+                     and os.path.isfile(restart), res.describe()):
+        return
     for porosity, seed, expect in ((0.4, 3, False), (0.37, 9, True)):
         text = ("atom_modify     map array\nread_restart    %s\n"
                 "newton          off\ncommunicate     single vel yes\n"
@@ -139,17 +179,30 @@ def main():
         text += fix_line(psd, porosity, seed) + su.MATERIALS + "run 1\n"
         res = su.run_launcher(args, su.write_file(
             os.path.join(root, "in.read_%d" % seed), text))
-        said = re.search(r"WARNING: Fix sequential/pack: the specimen restored "
-                         r"from the restart file was packed with porosity 0.4"
-                         r".*?seed 3.*?porosity 0.37.*?seed 9", res.text,
-                         re.S) is not None
-        chk.check("read_restart, porosity %s seed %d: %s" % (
-                      su.num(porosity), seed,
-                      "warns with both settings" if expect else "no warning"),
-                  res.returncode == 0 and said == expect
-                  and "packing the container full" not in res.text
-                  and ("restored from the restart" in res.text) == expect,
-                  res.text[-3000:])
+        warned = su.warnings_of(res.text, STYLE)
+        nums = su.numbers_in(" ".join(warned))
+        kept = su.nlocal_stats(res.text) == packed
+        if expect:
+            ok = len(warned) == 1 and all(v in nums for v in (0.4, 3, 0.37, 9, 20))
+        else:
+            ok = not warned
+        chk.check("read_restart, porosity %s seed %d: the %d grains kept, %s" % (
+                      su.num(porosity), seed, packed[0],
+                      "one warning naming both settings (porosity, seed, intervals)"
+                      if expect else "no warning"),
+                  res.returncode == 0 and kept and ok, "\n".join(warned) + res.text[-3000:])
+
+
+def main():
+    args = su.parse_args(__doc__)
+    chk = su.Checker()
+    psd = su.soils.psd_path("cu2.5", args.source)
+    root = su.fresh_dir(os.path.join(args.work, "fix_messages"))
+    check_empty_intervals(args, chk, psd, root)
+    check_dense(args, chk, psd, root)
+    check_small(args, chk, psd, root)
+    check_layering(args, chk, root)
+    check_restart(args, chk, psd, root)
     chk.finish()
 
 

@@ -29,7 +29,7 @@ import scene_util as su
 RANKS = (1, 2, 4)
 ARRANGEMENTS = ("discrete", "layerwise")
 INTERVALS = 20            # the fix's default
-EDGE = 5.6e-3            # container edge (m): 3.2 x 1.75 mm (in.pack)
+EDGE = 5.6e-3            # container edge (m): 3.5 coarsest diameters d_N of Cu 2.5
 FIX = "pack"
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Scene test: the oedometer scene end to end, on a specimen of about 4,200
-grains (Cu = 2.5, discrete arrangement, porosity 0.35: the scene's defaults,
-except side 3.3, the main job's quick-look size).
+"""Scene test: the oedometer scene end to end, on a specimen of 2,420 grains
+(Cu = 2.5, discrete arrangement, porosity 0.35: the scene's defaults, except
+side 2.75, which still holds the coarsest interval's grains; at rest after
+60,000 steps, half a minute).
 
 1. The run ends at rest (the stop rule's three conditions: kinetic energy,
    lid stress over the whole last block, steady primary fraction), with the
@@ -26,7 +27,16 @@ except side 3.3, the main job's quick-look size).
 3. The same final state, read from the restart file on 1 rank and on 2 ranks
    with `processors 2 1 1` (the cut goes through the specimen), gets the same
    classes grain by grain, and the same classes as the run itself.
-4. tools/plot_fabric.py draws the paper's figures from the run's output
+4. The scene writes the compute's whole outputs as
+   compute_primary_fabric/fabric_outputs.h defines them (tools/outputs.py
+   reads it): fabric_global.txt a row of the step and the fixed entries
+   plus two per direction bin (the scene's one copy of the fixed count, 31,
+   agrees with the header), fabric_intervals.txt a row per interval (the
+   scene's `intervals`, 20) of the row number and the array's columns.
+   The entries the scene reads by position (the time series, the FABRIC
+   line that tools/oedometer_runs.py reads, the step-0 values of the fix)
+   are the ones their names in the two headers say.
+5. tools/plot_fabric.py draws the paper's figures from the run's output
    without a warning (no column or vector entry missing).
 """
 import os
@@ -71,13 +81,45 @@ run 0
 """
 
 
+# What in.oedometer reads by position: (line pattern, the names of its
+# c_pf[N] and f_pack[N] in order of appearance)
+SCENE_POSITIONS = [
+    (r"^variable loose_pct .*", ["loose_percent_by_number"], ["few_contacts_percent"]),
+    (r"^variable primary_pct .*", ["primary_percent_by_mass"], ["held_mass_percent"]),
+    (r"^variable contacts .*", ["coordination"], ["contacts_per_grain"]),
+    (r"^fix series .*", ["overlapping_zone_percent"], []),
+    (r'^print "FABRIC: .*', ["loose_percent_by_number", "primary_percent_by_mass", "r1", "r2",
+                             "overlapping_zone_percent"], []),
+    (r'^print "BEFORE LOADING: .*', [], ["contacts_per_grain", "few_contacts_percent",
+                                          "held_mass_percent"]),
+]
+
+
+def check_scene_positions(args, chk):
+    """The scene's c_pf[N] and f_pack[N] name the entries it means."""
+    outputs = su.outputs
+    text = open(os.path.join(args.source, "input_scripts", "in.oedometer")).read()
+    pf = {e.position: e.name for e in outputs.fabric_vector(args.source)}
+    pack = {e.position: e.name for e in outputs.pack_vector(args.source)}
+    wrong = []
+    for pattern, want_pf, want_pack in SCENE_POSITIONS:
+        line = re.search(pattern, text, re.M)
+        got_pf = [pf.get(int(n)) for n in re.findall(r"c_pf\[(\d+)\]", line.group(0))] if line else None
+        got_pack = [pack.get(int(n)) for n in re.findall(r"f_pack\[(\d+)\]", line.group(0))] if line else None
+        if got_pf != want_pf or got_pack != want_pack:
+            wrong.append("%s: c_pf %s f_pack %s, meant %s %s" % (pattern, got_pf, got_pack, want_pf, want_pack))
+    chk.check("in.oedometer's c_pf[N] and f_pack[N] are the entries of fabric_outputs.h and "
+              "pack_outputs.h it means", not wrong, "\n".join(wrong))
+
+
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
     chk = su.Checker()
+    check_scene_positions(args, chk)
     out = os.path.join(args.work, "run")
     res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
-                          variables={"out": out, "every": 2000, "side": 3.3},
+                          variables={"out": out, "every": 2000, "side": 2.75},
                           log=os.path.join(args.work, "oedometer.log"),
                           cwd=args.source, timeout=900)
     if not chk.check("the oedometer scene runs (%.0f s)" % res.seconds,
@@ -158,8 +200,20 @@ def main():
     chk.check("the specimen carries load: some grains are primary fabric", cls.sum() > 10)
     # The global figures of the compute (fabric_global.txt: step, then the
     # vector) against the recount.
-    gl = [l.split() for l in open(os.path.join(out, "fabric_global.txt"))
-          if l.strip() and not l.startswith("#")]
+    outputs = su.outputs
+    gl = outputs.data_rows(os.path.join(out, "fabric_global.txt"))
+    want_len = outputs.fabric_vector_size(9, args.source)
+    chk.check("fabric_global.txt: step + %d entries (%d fixed in fabric_outputs.h + 2 x 9 "
+              "direction bins), got %d" % (want_len, len(outputs.fabric_vector(args.source)),
+                                           len(gl[-1]) - 1),
+              len(gl[-1]) == 1 + want_len)
+    blocks = outputs.vector_blocks(os.path.join(out, "fabric_intervals.txt"))
+    last = blocks[-1][1] if blocks else []
+    ncols = len(outputs.fabric_array(args.source))
+    chk.check("fabric_intervals.txt: 20 rows of the row number and the %d columns of "
+              "fabric_outputs.h" % ncols,
+              len(last) == 20 and all(len(r) == 1 + ncols for r in last)
+              and [r[0] for r in last] == list(range(1, 21)))
     v = [float(t) for t in gl[-1][1:]]
     n = len(ids)
     primary_mass = 100 * mass[recount == 1].sum() / mass.sum()

@@ -18,16 +18,15 @@ import os
 import re
 
 import scene_util as su
-
-SOILS = ["cu2.0", "cu2.5", "cu3.0", "cu3.5"]
+import soils  # noqa: E402  (tools/, on the path through scene_util)
 
 
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
     chk = su.Checker()
-    for soil in SOILS:
-        psd = os.path.join(args.source, "input_scripts", "psd", soil + ".txt")
+    for soil in soils.soils(args.source):
+        psd = soils.psd_path(soil, args.source)
         text = ("psd_info %s\nprint \"VALUES ${psd_dN} ${psd_d1} ${psd_Cu} ${psd_d10} ${psd_d60}\"\n"
                 "psd_info %s intervals 5\nprint \"FIVE ${psd_dN}\"\n" % (psd, psd))
         inp = su.write_file(os.path.join(args.work, "in.%s" % soil), text)

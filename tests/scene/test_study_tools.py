@@ -1,0 +1,175 @@
+#!/usr/bin/python3
+"""Scene test, label `scene`: the study's tools on the runs of the small
+matrix (tools/oedometer_study.py --small, both arrangements x Cu 2.0 and
+2.5, seed 1) cut short: side 2.5 and 2 ms of loading (4,000 steps), some
+seconds per run. What they show of the physics is tests/scene/
+test_study_small.py (label `study`); here only what the tools make of the
+runs, which does not need a specimen at rest:
+
+1. The driver writes one CSV row per run (4) with the run's folder, and
+   resumes: run again, it finds every run done and runs none.
+2. tools/validation_report.py turns the runs into the validation page's
+   tables (a row per model, Table 2 beside the paper's) and figures; with
+   --matrix a row per model carries its seed's primary % as the CSV has it
+   and the number of runs at rest; with --label a second matrix goes to
+   files and a page block of its own; the runs split over two --study
+   folders give the same tables; a run in two folders is refused.
+3. tools/fabric_layers.py cuts every run's final state into layers by
+   height: they hold every grain once and all of the mass, the core lies
+   inside the interior, and the whole specimen's primary share is the CSV
+   row's.
+"""
+import csv
+import os
+import re
+import subprocess
+
+import scene_util as su
+import soils  # noqa: E402  (tools/, on the path through scene_util)
+
+SIDE = "2.5"
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    driver = os.path.join(args.source, "tools", "oedometer_study.py")
+    cmd = ["/usr/bin/python3", driver, "--small", "--sides", SIDE, "--var", "t_max=0.002",
+           "--jobs", "2", "--out", args.work]
+    p = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=600)
+    print(p.stdout[-3000:], p.stderr[-3000:])
+    csv_path = os.path.join(args.work, "study.csv")
+    rows = list(csv.DictReader(open(csv_path))) if os.path.exists(csv_path) else []
+    chk.check("the driver exits 0 with 4 CSV rows (both rules x Cu 2.0, 2.5), each with "
+              "its run folder: exit %d, %d rows" % (p.returncode, len(rows)),
+              p.returncode == 0 and len(rows) == 4
+              and all(os.path.isfile(os.path.join(args.work, "runs", r["name"], "fabric_global.txt"))
+                      for r in rows))
+    p2 = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=300)
+    chk.check("run again, the driver resumes and runs nothing: %s"
+              % p2.stdout.splitlines()[0] if p2.stdout else "(no output)",
+                  p2.returncode == 0 and re.search(r"4 done, 0 to run", p2.stdout) is not None)
+    report = os.path.join(args.work, "report")
+    p3 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study", args.work, "--side", SIDE, "--out", report,
+                         "--matrix", os.path.join(args.work, "study.csv")],
+                        cwd=args.source, capture_output=True, text=True, timeout=600)
+    tables = open(os.path.join(report, "tables.md")).read() if p3.returncode == 0 else ""
+    pngs = ["summary.png", "DA/fig11_loose_number.png", "LA/fig19_primary_of_interval.png",
+            "DA/fig17_18_distributions.png", "LA/fig15_16_direction_rose.png"]
+    chk.check("validation_report: a table row per model, Table 2 with the paper's values, figures",
+              p3.returncode == 0 and all("| %s Cu %s |" % (r, c) in tables
+                                         for r in ("DA", "LA") for c in ("2.0", "2.5"))
+              and re.search(r"\| DA Cu 2\.5 \| [0-9.() -]+ \| 0\.11 \|", tables) is not None
+              and all(os.path.exists(os.path.join(report, f)) for f in pngs),
+              p3.stdout[-2000:] + p3.stderr[-2000:])
+    # --matrix: one row per model from the CSV, each seed's primary % as the
+    # CSV has it, and its own summary figure.
+    matrix = tables.split("The eight models at side %s d_N" % SIDE, 1)[1] if tables else ""
+    rest = {"%s Cu %s" % (soils.TAG[r["rule"]], r["soil"][2:]): int(r["at_rest"] == "yes")
+            for r in rows}
+    want = {"%s Cu %s" % (soils.TAG[r["rule"]], r["soil"][2:]):
+            "%.1f" % float(r["primary_mass_pct"]) for r in rows}
+    chk.check("validation_report --matrix: a row per model with its seed's primary %% %s" % want,
+              all(re.search(r"\| %s \| [0-9.() -]+ \| 1 \(%d\) \| %s \| %s \|"
+                            % (re.escape(m), rest[m], re.escape(v), re.escape(v)), matrix)
+                  for m, v in want.items())
+              and os.path.exists(os.path.join(report, "summary_side%s.png" % SIDE)),
+              matrix[:2000])
+    # --label: a second matrix beside the first, in files and a page block of
+    # its own; the unlabelled block stays as it was.
+    page = os.path.join(args.work, "page.md")
+    open(page, "w").write("<!-- matrix -->\nkept\n<!-- /matrix -->\n"
+                          "<!-- matrix-k1 -->\nold\n<!-- /matrix-k1 -->\n")
+    p5 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--out", report, "--matrix", os.path.join(args.work, "study.csv"),
+                         "--label", "k1", "--page", page],
+                        cwd=args.source, capture_output=True, text=True, timeout=300)
+    body = open(page).read()
+    chk.check("validation_report --matrix --label k1: tables_sideS_k1.md, summary_sideS_k1.png, "
+              "the page's matrix-k1 block filled, the matrix block kept",
+              p5.returncode == 0 and "kept" in body and "old" not in body
+              and all("| %s |" % m in body for m in want)
+              and os.path.exists(os.path.join(report, "tables_side%s_k1.md" % SIDE))
+              and os.path.exists(os.path.join(report, "summary_side%s_k1.png" % SIDE)),
+              p5.stdout[-1500:] + p5.stderr[-1500:] + body[:1500])
+    # Several --study folders: the runs split by rule over two folders (as
+    # two calls of the driver leave them) give the tables of the one folder;
+    # with --label and --page the tables go to the labelled blocks; a run
+    # given twice is refused.
+    halves = []
+    for rule in ("discrete", "layerwise"):
+        d = os.path.join(args.work, "split_" + rule)
+        os.makedirs(os.path.join(d, "runs"), exist_ok=True)
+        mine = [r for r in rows if r["rule"] == rule]
+        with open(os.path.join(args.work, "study.csv")) as f:
+            fields = next(csv.reader(f))
+        with open(os.path.join(d, "study.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields)
+            w.writeheader()
+            w.writerows(mine)
+        for r in mine:
+            link = os.path.join(d, "runs", r["name"])
+            if not os.path.lexists(link):
+                os.symlink(os.path.join(args.work, "runs", r["name"]), link)
+        halves.append(d)
+    page2 = os.path.join(args.work, "page2.md")
+    open(page2, "w").write("<!-- tables -->\nkept\n<!-- /tables -->\n"
+                           "<!-- tables-k2 -->\nold\n<!-- /tables-k2 -->\n")
+    report2 = os.path.join(args.work, "report2")
+    p6 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study"] + halves + ["--side", SIDE, "--out", report2,
+                                                "--label", "k2", "--page", page2],
+                        cwd=args.source, capture_output=True, text=True, timeout=600)
+    tables2 = open(os.path.join(report2, "tables.md")).read() if p6.returncode == 0 else ""
+    body2 = open(page2).read()
+    chk.check("validation_report --study A B: the tables of the one folder, "
+              "the page's tables-k2 block filled, the tables block kept",
+              p6.returncode == 0 and tables2.split("\n\nThe eight models")[0].strip()
+              == tables.split("\n\nThe eight models")[0].strip()
+              and "kept" in body2 and "old" not in body2
+              and all("| %s |" % m in body2 for m in want)
+              and os.path.exists(os.path.join(report2, "DA", "fig12_primary_mass.png")),
+              p6.stdout[-1500:] + p6.stderr[-1500:] + body2[:1500])
+    p7 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study", args.work, halves[0], "--side", SIDE,
+                         "--out", os.path.join(args.work, "report3")],
+                        cwd=args.source, capture_output=True, text=True, timeout=300)
+    chk.check("validation_report --study with a run in two folders: exit 2 naming it (%s)"
+              % p7.stderr.strip()[:200],
+              p7.returncode == 2 and "in both" in p7.stderr)
+    # tools/fabric_layers.py on every run: the layers from the floor to
+    # the top hold every grain once and all of the mass, and the whole
+    # specimen's primary share is the CSV row's.
+    for row in rows:
+        rundir = os.path.join(args.work, "runs", row["name"])
+        p4 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
+                             rundir], cwd=args.source, capture_output=True, text=True, timeout=120)
+        got = {}
+        for line in p4.stdout.splitlines():
+            w = line.rsplit(None, 5)
+            if len(w) == 6 and not line.startswith(("#", "layer ")):
+                got[w[0].strip()] = [float(x) for x in w[2:]]
+        layer_names = ["floor, first half d_N", "floor, second half d_N", "interior",
+                       "top, second half d_N", "top, first half d_N"]
+        ok = p4.returncode == 0 and all(n in got for n in layer_names + ["whole specimen"])
+        grains = sum(got[n][0] for n in layer_names) if ok else -1
+        mass = sum(got[n][1] for n in layer_names) if ok else -1
+        whole = got["whole specimen"][2] if ok else float("nan")
+        chk.check("%s: fabric_layers: %d grains in the layers (CSV %s), mass %.1f %%, "
+                  "whole primary %.2f %% (CSV %s)"
+                  % (row["name"], grains, row["grains"], mass, whole, row["primary_mass_pct"]),
+                  ok and grains == int(row["grains"]) and abs(mass - 100) < 0.1
+                  and abs(whole - float(row["primary_mass_pct"])) < 0.015,
+                  p4.stdout[-1500:] + p4.stderr[-1500:])
+        core = got.get("core, 1 d_N from every wall", [-1])[0]
+        chk.check("%s: fabric_layers: the core (%d grains) lies inside the interior (%d)"
+                  % (row["name"], core, got["interior"][0] if ok else -1),
+                  ok and 0 < core < got["interior"][0],
+                  p4.stdout[-1500:])
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,165 @@
+"""The outputs of our two styles, read from the one table each defines them
+in, for every tool and test:
+
+  compute primary/fabric  compute_primary_fabric/fabric_outputs.h
+                          FABRIC_VECTOR_ENTRIES (global vector, entries
+                          1..31, then two per direction bin) and
+                          FABRIC_ARRAY_COLUMNS (global array, one row per
+                          size interval)
+  fix sequential/pack     fix_sequential_pack/pack_outputs.h
+                          PACK_VECTOR_ENTRIES (global vector)
+
+Each table is one X(position, name, "meaning") per line, positions from 1
+as c_ID[I] and f_ID[I] count them. Also here: the output files of
+input_scripts/in.oedometer that hold these outputs (fabric_global.txt,
+fabric_intervals.txt), read by position and named by the tables, and the
+lines of an input script that print the fix's vector.
+
+Standard library and numpy only; import it as `import outputs` with tools/
+on sys.path (the scene tests get it from --source).
+"""
+import os
+import re
+from collections import namedtuple
+
+import numpy as np
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir))
+FABRIC_HEADER = os.path.join("compute_primary_fabric", "fabric_outputs.h")
+PACK_HEADER = os.path.join("fix_sequential_pack", "pack_outputs.h")
+
+Entry = namedtuple("Entry", "position name meaning")
+
+
+def read_table(path, macro):
+    """The entries of the X-macro table `macro` in the header `path`: a list
+    of Entry(position, name, meaning), checked to be numbered 1..n."""
+    with open(path) as f:
+        text = f.read()
+    head = "#define %s(X)" % macro
+    if head not in text:
+        raise ValueError("%s: no table %s" % (path, macro))
+    body = text.split(head, 1)[1].split("\n\n", 1)[0]
+    entries = [Entry(int(p), n, m) for p, n, m in
+               re.findall(r'X\((\d+), (\w+), "([^"]*)"\)', body)]
+    if [e.position for e in entries] != list(range(1, len(entries) + 1)):
+        raise ValueError("%s: %s is not numbered 1..n" % (path, macro))
+    return entries
+
+
+def fabric_vector(source=ROOT):
+    """compute primary/fabric: the fixed entries of the global vector (the
+    direction bins follow them)."""
+    return read_table(os.path.join(source, FABRIC_HEADER), "FABRIC_VECTOR_ENTRIES")
+
+
+def fabric_array(source=ROOT):
+    """compute primary/fabric: the columns of the global array."""
+    return read_table(os.path.join(source, FABRIC_HEADER), "FABRIC_ARRAY_COLUMNS")
+
+
+def pack_vector(source=ROOT):
+    """fix sequential/pack: the entries of the global vector."""
+    return read_table(os.path.join(source, PACK_HEADER), "PACK_VECTOR_ENTRIES")
+
+
+def index(entries):
+    """{name: 0-based position}."""
+    return {e.name: e.position - 1 for e in entries}
+
+
+def fabric_vector_size(direction_bins, source=ROOT):
+    """Length of the compute's global vector with M direction bins: the
+    fixed entries, then (fraction, mean normal force) per bin."""
+    return len(fabric_vector(source)) + 2 * direction_bins
+
+
+def direction_bins(vector, source=ROOT):
+    """(fraction, mean normal force) arrays of the direction bins of a whole
+    global vector (their number follows from its length)."""
+    fixed = len(fabric_vector(source))
+    m = (len(vector) - fixed) // 2
+    bins = np.asarray(vector[fixed:fixed + 2 * m], float).reshape(m, 2)
+    return bins[:, 0], bins[:, 1]
+
+
+# ---- the scenes' output files ---------------------------------------------
+
+def data_rows(path):
+    """The rows of numbers of a fix ave/time file (comments skipped)."""
+    with open(path) as f:
+        return [l.split() for l in f if l.strip() and not l.lstrip().startswith("#")]
+
+
+def vector_blocks(path):
+    """A fix ave/time file in mode vector: [(step, rows as lists of floats)],
+    an incomplete last block (a run still writing) dropped."""
+    lines = data_rows(path)
+    blocks, i = [], 0
+    while i < len(lines):
+        w = lines[i]
+        if len(w) != 2:
+            raise ValueError("%s: expected a block header 'step nrows', got '%s'"
+                             % (path, " ".join(w)))
+        step, nrows = int(float(w[0])), int(float(w[1]))
+        rows = lines[i + 1:i + 1 + nrows]
+        if len(rows) < nrows:
+            break
+        blocks.append((step, [[float(x) for x in r] for r in rows]))
+        i += 1 + nrows
+    return blocks
+
+
+def read_intervals(path, source=ROOT):
+    """The last block of fabric_intervals.txt (the compute's global array,
+    one row per interval, after the row number) as {column name: array},
+    names from fabric_outputs.h, plus 'step' and 'nblocks'; None without a
+    complete block."""
+    blocks = vector_blocks(path)
+    if not blocks:
+        return None
+    step, rows = blocks[-1]
+    cols = fabric_array(source)
+    if not rows or min(len(r) for r in rows) < 1 + len(cols):
+        raise ValueError("%s: the last block (step %d) does not have the row "
+                         "number and the %d columns of the compute's array"
+                         % (path, step, len(cols)))
+    arr = np.array([r[:1 + len(cols)] for r in rows])
+    out = {e.name: arr[:, e.position] for e in cols}
+    out["step"], out["nblocks"] = step, len(blocks)
+    return out
+
+
+def read_global(path, source=ROOT):
+    """The last global vector of compute primary/fabric in fabric_global.txt
+    (fix ave/time in scalar mode: rows 'step v1 v2 ...'), as a numpy array
+    (entry I at index I-1); None if the file is missing, holds no row, or
+    holds something shorter than the fixed entries."""
+    if not os.path.exists(path):
+        return None
+    rows = data_rows(path)
+    if not rows or len(rows[-1]) < 1 + len(fabric_vector(source)):
+        return None
+    return np.array([float(v) for v in rows[-1][1:]])
+
+
+# ---- fix sequential/pack's vector in an input script -----------------------
+
+def pack_vector_print(fix_id, source=ROOT):
+    """Input lines that print the fix's global vector as one line,
+    'PACK_VECTOR v1 v2 ...' (read back by pack_vector_values)."""
+    n = len(pack_vector(source))
+    text = "".join("variable        pv%d equal f_%s[%d]\n" % (i, fix_id, i)
+                   for i in range(1, n + 1))
+    return text + ('print           "PACK_VECTOR %s"\n'
+                   % " ".join("${pv%d}" % i for i in range(1, n + 1)))
+
+
+def pack_vector_values(text, source=ROOT):
+    """The fix's global vector as printed by pack_vector_print(): a dict by
+    name (the last such line of `text`), or None."""
+    found = re.findall(r"^PACK_VECTOR (.*)$", text, re.M)
+    if not found:
+        return None
+    names = [e.name for e in pack_vector(source)]
+    return dict(zip(names, (float(v) for v in found[-1].split())))
