@@ -7,7 +7,7 @@
    error->all with the message, so every rank stops, the screen and the log
    show "ERROR: message", and the exit status is not 0. Used as
      if "${dt} > ${dt_crit}" then "error 'the time step ... is above ...'"
-   (docs/oedometer.md, "Where it fails"). */
+   (docs/user_guide.md, "When it stops with an error"). */
 
 #ifdef COMMAND_CLASS
 

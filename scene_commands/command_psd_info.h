@@ -9,7 +9,7 @@
      psd_d1   representative diameter of the finest interval (d_1)
      psd_d10, psd_d60, psd_Cu   of the PSD curve
    e.g. `variable L equal ${side}*${psd_dN}` gives a container `side`
-   coarsest diameters wide for any soil (docs/oedometer.md). */
+   coarsest diameters wide for any soil (docs/user_guide.md). */
 
 #ifdef COMMAND_CLASS
 

@@ -83,7 +83,7 @@ MODEL_DEFAULTS = {"rolling eta": "1", "sliding mu": "0.4", "rolling model": "eps
 # every variant runs on this base (the quick-look size of the main job, 4,188
 # grains of Cu 2.5, and the time step, t_max, servo and energy limit the
 # chart was measured with: the scene's defaults before the PI servo and
-# ke_vrms 2e-4, whose knee at the default size docs/oedometer.md shows);
+# ke_vrms 2e-4, whose knee at the default size docs/user_guide.md shows);
 # a variant's own settings replace it
 BASE = {"side": "3.3", "dtfac": "0.2", "t_max": "0.1", "ki": "0", "ke_vrms": "1e-4"}
 # The chart at the converged setting (--set converged, chart_side5.5.csv and
@@ -92,7 +92,7 @@ BASE = {"side": "3.3", "dtfac": "0.2", "t_max": "0.1", "ki": "0", "ke_vrms": "1e
 # 1), so that the wall times compare: each factor once cheaper and once more
 # refined than the default where both exist. Not here: pf_tol 4 (the
 # steadiness rule is not what stops the default run, the energy limit is)
-# and the damping ratio (a model parameter: docs/oedometer.md).
+# and the damping ratio (a model parameter: docs/user_guide.md).
 CONVERGED_BASE = {}
 CONVERGED_VARIANTS = [
     ("default",       "default",    "",      {},                      2, False),
