@@ -7,6 +7,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <Eigen/Core>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -212,6 +213,39 @@ struct FaceResult {
   bool degenerate;
 };
 
+// Largest empty circle centred on the segment a-b of the face plane (2-D
+// frame coordinates), beside the discs a, b and c: where the gaps to two of
+// them are equal along the segment. Radius 0 if none is positive.
+double edge_circle(const Eigen::Vector2d& a, double ra, const Eigen::Vector2d& b,
+                   double rb, const Eigen::Vector2d& c, double rc,
+                   Eigen::Vector2d& centre) {
+  const Eigen::Vector2d e = b - a;
+  const double d = e.norm();
+  auto gap = [&](double t) {  // t: distance from a along the segment
+    Eigen::Vector2d p = a + t / d * e;
+    return std::min({t - ra, d - t - rb, (p - c).norm() - rc});
+  };
+  std::vector<double> ts = {(d + ra - rb) / 2.0};  // equal gaps to a and b
+  // Equal gaps to a (or b) and c: t + delta = |p - c| is linear in t.
+  for (int end = 0; end < 2; ++end) {
+    const Eigen::Vector2d& o = end ? b : a;
+    const double ro = end ? rb : ra;
+    Eigen::Vector2d u = (end ? -e : e) / d, w = c - o;
+    double xk = w.dot(u), delta = rc - ro;
+    double den = 2.0 * (delta + xk);
+    if (den == 0.0) continue;
+    double t = (w.squaredNorm() - delta * delta) / den;
+    if (t + delta >= 0.0) ts.push_back(end ? d - t : t);
+  }
+  double best = 0.0;
+  for (double t : ts) {
+    if (!(t >= 0.0 && t <= d)) continue;
+    double g = gap(t);
+    if (g > best) best = g, centre = a + t / d * e;
+  }
+  return best;
+}
+
 FaceResult solve_face(const Face& f, const std::vector<Sphere>& s) {
   const Sphere& a = s[f.sphere[0]];
   const Sphere& b = s[f.sphere[1]];
@@ -224,8 +258,26 @@ FaceResult solve_face(const Face& f, const std::vector<Sphere>& s) {
     return r;
   }
   r.normal = frame->normal;
-  if (auto k = constriction(*frame, a.radius, b.radius, c.radius))
-    r.disc = ConstrictionDisc{k->centre, frame->normal, k->radius};
+  if (auto k = constriction(*frame, a.radius, b.radius, c.radius)) {
+    r.disc = ConstrictionDisc{k->centre, frame->normal, k->radius, false};
+    return r;
+  }
+  // Eq. (2) has no circle inside the triangle: the narrowest passage of the
+  // face then lies on one of its edges.
+  const Eigen::Vector2d p[3] = {{0.0, 0.0}, {frame->x2, 0.0},
+                                {frame->x3, frame->y3}};
+  const double rr[3] = {a.radius, b.radius, c.radius};
+  double best = 0.0;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    Eigen::Vector2d q = Eigen::Vector2d::Zero();
+    double g = edge_circle(p[i], rr[i], p[j], rr[j], p[k], rr[k], q);
+    if (g > best) best = g, centre = q;
+  }
+  if (best > 0.0)
+    r.disc = ConstrictionDisc{frame->to_global(centre.x(), centre.y(), 0.0),
+                              frame->normal, best, true};
   return r;
 }
 
@@ -326,14 +378,17 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
                       r.centroid, r.normal, r.scale, r.disc);
     } else if (r.disc) {
       net.discs.push_back(*r.disc);
+      net.on_edge += r.disc->on_edge;
     } else {
       ++net.unsolved;
     }
   });
   for (const auto& kv : shared)
     for (const Opening& op : kv.second) {
-      if (op.disc)
+      if (op.disc) {
         net.discs.push_back(*op.disc);
+        net.on_edge += op.disc->on_edge;
+      }
       else
         ++net.unsolved;
     }

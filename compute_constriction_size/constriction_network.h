@@ -10,7 +10,11 @@
 // pore; with PoreMerging::overlap, so are neighbours whose inscribed pore
 // spheres overlap. Every triangular face between two different pores gives
 // one constriction, the paper's Eq. (2) (fabric::constriction of
-// core/trilateration.h); coplanar faces between the same two pores (the
+// core/trilateration.h): the largest circle in the face plane touching the
+// three spheres. Where that circle does not lie inside the triangle (an
+// obtuse face: two fine spheres with a coarse one to the side), the face's
+// narrowest passage lies on an edge, and its constriction is the largest
+// circle centred on an edge that overlaps none of the three; coplanar faces between the same two pores (the
 // two halves of a lattice's square face) are one opening, the largest of
 // their circles.
 #ifndef FABRIC_CONSTRICTION_NETWORK_H
@@ -50,6 +54,9 @@ struct ConstrictionDisc {
   Vec3 centre;
   Vec3 normal;  // unit normal of the face
   double radius;
+  // Eq. (2) has no circle inside the triangle (an obtuse face): the largest
+  // empty circle centred on one of the face's edges instead.
+  bool on_edge = false;
 };
 
 struct ConstrictionNetwork {
@@ -59,7 +66,8 @@ struct ConstrictionNetwork {
   long cells = 0;          // finite tetrahedra
   long pores = 0;          // after merging
   long wall_excluded = 0;  // faces between pores within the wall margin
-  long unsolved = 0;       // faces away from the walls without an Eq. (2) circle
+  long on_edge = 0;        // counted discs on an edge (see ConstrictionDisc)
+  long unsolved = 0;       // faces away from the walls without any circle
   double wall_margin = 0.0;
   Box container;
   // Largest diameter that a path of pores from the floor to the lid never

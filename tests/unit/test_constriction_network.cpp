@@ -112,6 +112,37 @@ TEST(ConstrictionNetwork, ThreeTouchingSpheresRadii123Give6Over23) {
   EXPECT_TRUE(found);
 }
 
+TEST(ConstrictionNetwork, ObtuseFaceGetsTheLargestEmptyCircleOnAnEdge) {
+  // Two fine spheres above each other with a coarse one to the side: the
+  // circle touching all three lies outside the triangle (Eq. 2 has none).
+  Sphere a{Vec3(0, 0, -1), 0.25}, b{Vec3(0, 0, 1), 0.25},
+      c{Vec3(std::sqrt(2.0), 0, 0), 1.0005};
+  ASSERT_FALSE(fabric::constriction(a, b, c));
+  // Brute force along the three edges: the largest gap to the three discs.
+  std::array<Sphere, 3> s{a, b, c};
+  double best = 0.0;
+  for (int e = 0; e < 3; ++e)
+    for (int k = 0; k <= 200000; ++k) {
+      Vec3 p = s[e].centre + (k / 200000.0) * (s[(e + 1) % 3].centre - s[e].centre);
+      double g = INFINITY;
+      for (const Sphere& q : s) g = std::min(g, (p - q.centre).norm() - q.radius);
+      best = std::max(best, g);
+    }
+  ConstrictionOptions o;
+  o.wall_margin = 0.0;
+  o.container = fabric::Box{Vec3(-20, -20, -20), Vec3(20, 20, 20)};
+  auto net = fabric::constriction_network(
+      {a, b, c, {Vec3(0.3, 3, 0), 1.0}, {Vec3(0.3, -3, 0), 1.0}}, o);
+  bool found = false;
+  for (const auto& d : net.discs)
+    if (d.on_edge && std::abs(d.normal.y()) > 0.999) {
+      found = true;
+      EXPECT_NEAR(d.radius, best, 1e-6);
+    }
+  EXPECT_TRUE(found);
+  EXPECT_GT(net.on_edge, 0);
+}
+
 TEST(ConstrictionNetwork, ScalingEveryLengthScalesEveryConstriction) {
   auto s = random_spheres(400, 7);
   auto base = fabric::constriction_network(s, {});

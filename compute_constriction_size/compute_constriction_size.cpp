@@ -1,0 +1,334 @@
+/* compute constriction/size: LIGGGHTS adapter of the constriction network.
+   See compute_constriction_size.h and docs/compute_constriction_size.md. */
+
+#include "compute_constriction_size.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "region.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+const int kLocalColumns = 7;  // centre x y z, normal x y z, radius
+const int kPercentiles = 19;  // D_c5 .. D_c95
+}  // namespace
+
+ComputeConstrictionSize::ComputeConstrictionSize(LAMMPS *lmp, int iarg,
+                                                 int narg, char **arg)
+    : Compute(lmp, iarg, narg, arg) {
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "Compute constriction/size requires atom_style granular "
+                      "(sphere: radius, rmass)");
+  parse(narg - iarg, arg + iarg);
+  vector_flag = 1;
+  size_vector = kVectorSize;
+  extvector = 0;
+  local_flag = 1;
+  size_local_rows = 0;
+  size_local_cols = kLocalColumns;
+  vector = new double[size_vector]();
+  array_local = nullptr;
+}
+
+ComputeConstrictionSize::~ComputeConstrictionSize() {
+  delete[] vector;
+  memory->destroy(array_local);
+}
+
+void ComputeConstrictionSize::parse(int narg, char **arg) {
+  auto fail = [&](const std::string &m) {
+    error->all(FLERR, ("Compute constriction/size: " + m).c_str());
+  };
+  auto value = [&](int i, const char *what) -> std::string {
+    if (i + 1 >= narg)
+      fail(std::string("keyword '") + arg[i] + "' needs " + what);
+    return arg[i + 1];
+  };
+  auto number = [&](const std::string &s, const std::string &kw) {
+    char *end = nullptr;
+    double v = strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0' || !std::isfinite(v))
+      fail(kw + " '" + s + "' is not a number");
+    return v;
+  };
+  for (int i = 0; i < narg; i += 2) {
+    std::string kw = arg[i];
+    if (kw == "container") {
+      region_id_ = value(i, "the ID of a region of style block");
+    } else if (kw == "wall_margin") {
+      std::string v = value(i, "a length >= 0");
+      options_.wall_margin = number(v, kw);
+      if (options_.wall_margin < 0.0)
+        fail("wall_margin " + v + " must not be negative");
+    } else if (kw == "merge") {
+      std::string v = value(i, "coincident or overlap");
+      if (v == "coincident")
+        options_.merging = fabric::PoreMerging::coincident;
+      else if (v == "overlap")
+        options_.merging = fabric::PoreMerging::overlap;
+      else
+        fail("merge '" + v + "' is unknown: use coincident or overlap");
+    } else if (kw == "tolerance") {
+      std::string v = value(i, "a share in [0, 0.1]");
+      options_.coincident_tolerance = number(v, kw);
+      if (!(options_.coincident_tolerance >= 0.0 &&
+            options_.coincident_tolerance <= 0.1))
+        fail("tolerance " + v + " must lie in [0, 0.1]");
+    } else if (kw == "loose") {
+      loose_group_ = value(i, "a group ID");
+      int g = group->find(loose_group_.c_str());
+      if (g < 0) fail("loose group '" + loose_group_ + "' does not exist");
+      loose_bit_ = group->bitmask[g];
+    } else if (kw == "fabric") {
+      fabric_id_ = value(i, "the ID of a compute primary/fabric");
+    } else if (kw == "control") {
+      std::string v = value(i, "a percent in [5, 95]");
+      control_percent_ = number(v, kw);
+      if (!(control_percent_ >= 5.0 && control_percent_ <= 95.0))
+        fail("control " + v + " must lie in [5, 95]");
+    } else if (kw == "csd") {
+      csd_file_ = value(i, "a file name");
+    } else {
+      fail("unknown keyword '" + kw + "': allowed are container wall_margin "
+           "merge tolerance fabric loose control csd");
+    }
+  }
+}
+
+void ComputeConstrictionSize::init() {
+  if (!region_id_.empty()) {
+    int r = domain->find_region(const_cast<char *>(region_id_.c_str()));
+    if (r < 0)
+      error->all(FLERR, ("Compute constriction/size: container region '" +
+                         region_id_ + "' does not exist").c_str());
+    if (strcmp(domain->regions[r]->style, "block") != 0)
+      error->all(FLERR, ("Compute constriction/size: container region '" +
+                         region_id_ + "' is style " +
+                         domain->regions[r]->style +
+                         "; only a block container is supported").c_str());
+  }
+  fabric_ = nullptr;
+  if (!fabric_id_.empty()) {
+    int c = modify->find_compute(const_cast<char *>(fabric_id_.c_str()));
+    if (c < 0)
+      error->all(FLERR, ("Compute constriction/size: fabric compute ID '" +
+                         fabric_id_ + "' does not exist").c_str());
+    if (strcmp(modify->compute[c]->style, "primary/fabric") != 0)
+      error->all(FLERR, ("Compute constriction/size: compute '" + fabric_id_ +
+                         "' is style " + modify->compute[c]->style +
+                         ", not primary/fabric").c_str());
+    fabric_ = modify->compute[c];
+  }
+  analysed_step_ = -1;  // a new run: atoms may have moved on this same step
+}
+
+std::vector<fabric::Sphere> ComputeConstrictionSize::gather_group() {
+  std::vector<double> mine;  // tag, x, y, z, r per grain
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!skeleton(i)) continue;
+    mine.insert(mine.end(), {double(atom->tag[i]), atom->x[i][0],
+                             atom->x[i][1], atom->x[i][2], atom->radius[i]});
+  }
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  long total = 0;
+  for (int p = 0; p < comm->nprocs; ++p) displs[p] = total, total += counts[p];
+  std::vector<double> all(comm->me == 0 ? total : 0);
+  MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(),
+              displs.data(), MPI_DOUBLE, 0, world);
+  // In the order of the atom IDs: the same triangulation on any number of
+  // ranks.
+  std::vector<std::pair<double, fabric::Sphere>> tagged;
+  for (long k = 0; k + 4 < (long)all.size() + 1; k += 5)
+    tagged.push_back({all[k], {fabric::Vec3(all[k + 1], all[k + 2],
+                                            all[k + 3]), all[k + 4]}});
+  std::sort(tagged.begin(), tagged.end(),
+            [](const auto &a, const auto &b) { return a.first < b.first; });
+  std::vector<fabric::Sphere> spheres;
+  spheres.reserve(tagged.size());
+  for (const auto &t : tagged) spheres.push_back(t.second);
+  return spheres;
+}
+
+void ComputeConstrictionSize::analyse() {
+  if (analysed_step_ == update->ntimestep) return;
+  analysed_step_ = update->ntimestep;
+  update_classes();
+  bigint mine = 0, ngrains = 0;
+  for (int i = 0; i < atom->nlocal; ++i) mine += skeleton(i);
+  MPI_Allreduce(&mine, &ngrains, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (ngrains < 4) {
+    char m[256];
+    snprintf(m, sizeof m, "Compute constriction/size: %s of group '%s' has "
+             BIGINT_FORMAT " grains; a constriction network needs at least 4",
+             fabric_ ? "the primary fabric" : "the group",
+             group->names[igroup], ngrains);
+    error->all(FLERR, m);
+  }
+  if (!region_id_.empty()) {
+    Region *r = domain->regions[domain->find_region(
+        const_cast<char *>(region_id_.c_str()))];
+    options_.container = fabric::Box{
+        fabric::Vec3(r->extent_xlo, r->extent_ylo, r->extent_zlo),
+        fabric::Vec3(r->extent_xhi, r->extent_yhi, r->extent_zhi)};
+  }
+  std::vector<fabric::Sphere> spheres = gather_group();
+  fabric::ConstrictionNetwork net;
+  char message[512] = "";
+  if (comm->me == 0) {
+    try {
+      net = fabric::constriction_network(spheres, options_);
+    } catch (const std::exception &e) {
+      snprintf(message, sizeof message, "Compute constriction/size: %s",
+               e.what());
+    }
+  }
+  spheres = {};
+  MPI_Bcast(message, sizeof message, MPI_CHAR, 0, world);
+  if (message[0]) error->all(FLERR, message);
+  if (comm->me == 0) fill_vector(net);
+  MPI_Bcast(vector, size_vector, MPI_DOUBLE, 0, world);
+  loose_verdict();
+  fill_local(net);
+  if (comm->me == 0) write_csd(net);
+}
+
+void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net) {
+  std::vector<double> p;
+  for (int k = 1; k <= kPercentiles; ++k) p.push_back(5.0 * k);
+  std::vector<double> by_number = fabric::csd_percentiles(net.discs, p, false);
+  std::vector<double> by_cubic = fabric::csd_percentiles(net.discs, p, true);
+  vector[0] = static_cast<double>(net.discs.size());
+  for (int k = 0; k < kPercentiles; ++k) {
+    vector[1 + k] = by_number[k];
+    vector[1 + kPercentiles + k] = by_cubic[k];
+  }
+  vector[kPercolation - 1] = net.percolation_diameter;
+  vector[kControl - 1] =
+      fabric::csd_percentiles(net.discs, {control_percent_}, false)[0];
+  vector[kPores - 1] = net.pores;
+  vector[kGrains - 1] = net.spheres;
+  vector[kHidden - 1] = net.hidden;
+  vector[kWallExcluded - 1] = net.wall_excluded;
+  vector[kOnEdge - 1] = net.on_edge;
+  vector[kUnsolved - 1] = net.unsolved;
+  vector[kWallMargin - 1] = net.wall_margin;
+  char m[512];
+  if (net.hidden > 0) {
+    snprintf(m, sizeof m, "Compute constriction/size: %ld of %ld grains "
+             "overlap their neighbours so much that the regular "
+             "triangulation hides them; they are left out of the pores",
+             net.hidden, net.spheres);
+    error->warning(FLERR, m);
+  }
+  if (net.discs.empty()) {
+    snprintf(m, sizeof m, "Compute constriction/size: no constriction lies "
+             "farther than the wall margin %g from the container walls; the "
+             "diameters are NaN", net.wall_margin);
+    error->warning(FLERR, m);
+  }
+}
+
+void ComputeConstrictionSize::loose_verdict() {
+  // Sums: loose mass, loose finer than the controlling constriction, loose
+  // finer than the percolation opening, the group's mass.
+  double mine[4] = {0, 0, 0, 0}, all[4];
+  const double dc = vector[kControl - 1], dp = vector[kPercolation - 1];
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const double m = atom->rmass[i], d = 2.0 * atom->radius[i];
+    if (skeleton(i)) mine[3] += m;
+    if (!loose(i)) continue;
+    mine[0] += m;
+    if (d < dc) mine[1] += m;
+    if (d < dp) mine[2] += m;
+  }
+  MPI_Allreduce(mine, all, 4, MPI_DOUBLE, MPI_SUM, world);
+  vector[kLooseFinerControl - 1] = all[0] > 0 ? 100.0 * all[1] / all[0] : 0.0;
+  vector[kLooseFinerPercolation - 1] =
+      all[0] > 0 ? 100.0 * all[2] / all[0] : 0.0;
+  vector[kLooseMassPercent - 1] =
+      all[0] + all[3] > 0 ? 100.0 * all[0] / (all[0] + all[3]) : 0.0;
+}
+
+void ComputeConstrictionSize::fill_local(const fabric::ConstrictionNetwork &net) {
+  memory->destroy(array_local);
+  nrows_ = static_cast<int>(net.discs.size());  // rank 0 holds them all
+  size_local_rows = nrows_;
+  if (nrows_ == 0) return;
+  memory->create(array_local, nrows_, kLocalColumns,
+                 "constriction/size:array_local");
+  for (int r = 0; r < nrows_; ++r) {
+    const auto &d = net.discs[r];
+    for (int k = 0; k < 3; ++k) {
+      array_local[r][k] = d.centre[k];
+      array_local[r][3 + k] = d.normal[k];
+    }
+    array_local[r][6] = d.radius;
+  }
+}
+
+void ComputeConstrictionSize::write_csd(const fabric::ConstrictionNetwork &net) {
+  if (csd_file_.empty()) return;
+  FILE *f = fopen(csd_file_.c_str(), "w");
+  if (!f) {
+    error->warning(FLERR, ("Compute constriction/size: cannot write csd file '" +
+                           csd_file_ + "'").c_str());
+    return;
+  }
+  fprintf(f, "# compute %s constriction/size, group %s, step " BIGINT_FORMAT
+          ": %zu constrictions\n# diameter percent_finer_by_number "
+          "percent_finer_by_diameter_cubed\n",
+          id, group->names[igroup], update->ntimestep, net.discs.size());
+  for (const auto &p : fabric::cumulative_csd(net.discs))
+    fprintf(f, "%.9g %.6f %.6f\n", p.diameter, p.percent_number,
+            p.percent_cubic);
+  fclose(f);
+}
+
+void ComputeConstrictionSize::update_classes() {
+  if (fabric_ && fabric_->invoked_peratom != update->ntimestep)
+    fabric_->compute_peratom();  // it records the step itself
+}
+
+bool ComputeConstrictionSize::skeleton(int i) const {
+  if (!(atom->mask[i] & groupbit)) return false;
+  return !fabric_ || fabric_->array_atom[i][1] == 1.0;
+}
+
+bool ComputeConstrictionSize::loose(int i) const {
+  if (loose_bit_) return atom->mask[i] & loose_bit_;
+  return fabric_ && (atom->mask[i] & groupbit) &&
+         fabric_->array_atom[i][1] == 0.0;
+}
+
+void ComputeConstrictionSize::compute_vector() {
+  invoked_vector = update->ntimestep;
+  analyse();
+}
+
+void ComputeConstrictionSize::compute_local() {
+  invoked_local = update->ntimestep;
+  analyse();
+}
+
+double ComputeConstrictionSize::memory_usage() {
+  return static_cast<double>(nrows_) * kLocalColumns * sizeof(double);
+}
