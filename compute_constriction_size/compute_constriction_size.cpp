@@ -21,6 +21,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "region.h"
+#include "suffusion_criteria.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -139,12 +140,15 @@ void ComputeConstrictionSize::init() {
   analysed_step_ = -1;  // a new run: atoms may have moved on this same step
 }
 
-std::vector<fabric::Sphere> ComputeConstrictionSize::gather_group() {
-  std::vector<double> mine;  // tag, x, y, z, r per grain
+ComputeConstrictionSize::Grains ComputeConstrictionSize::gather() {
+  const int kFields = 7;  // tag, x, y, z, r, mass, 1 skeleton / 0 loose
+  std::vector<double> mine;
   for (int i = 0; i < atom->nlocal; ++i) {
-    if (!skeleton(i)) continue;
+    const bool s = skeleton(i);
+    if (!s && !loose(i)) continue;
     mine.insert(mine.end(), {double(atom->tag[i]), atom->x[i][0],
-                             atom->x[i][1], atom->x[i][2], atom->radius[i]});
+                             atom->x[i][1], atom->x[i][2], atom->radius[i],
+                             atom->rmass[i], s ? 1.0 : 0.0});
   }
   int n = static_cast<int>(mine.size());
   std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
@@ -154,18 +158,25 @@ std::vector<fabric::Sphere> ComputeConstrictionSize::gather_group() {
   std::vector<double> all(comm->me == 0 ? total : 0);
   MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(),
               displs.data(), MPI_DOUBLE, 0, world);
-  // In the order of the atom IDs: the same triangulation on any number of
-  // ranks.
-  std::vector<std::pair<double, fabric::Sphere>> tagged;
-  for (long k = 0; k + 4 < (long)all.size() + 1; k += 5)
-    tagged.push_back({all[k], {fabric::Vec3(all[k + 1], all[k + 2],
-                                            all[k + 3]), all[k + 4]}});
-  std::sort(tagged.begin(), tagged.end(),
-            [](const auto &a, const auto &b) { return a.first < b.first; });
-  std::vector<fabric::Sphere> spheres;
-  spheres.reserve(tagged.size());
-  for (const auto &t : tagged) spheres.push_back(t.second);
-  return spheres;
+  // In the order of the atom IDs: the same triangulation and sums on any
+  // number of ranks.
+  std::vector<long> order(all.size() / kFields);
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](long a, long b) {
+    return all[a * kFields] < all[b * kFields];
+  });
+  Grains g;
+  for (long k : order) {
+    const double *f = &all[k * kFields];
+    if (f[6] == 1.0) {
+      g.skeleton.push_back({fabric::Vec3(f[1], f[2], f[3]), f[4]});
+      g.skeleton_mass.push_back(f[5]);
+    } else {
+      g.loose_diameter.push_back(2.0 * f[4]);
+      g.loose_mass.push_back(f[5]);
+    }
+  }
+  return g;
 }
 
 void ComputeConstrictionSize::analyse() {
@@ -190,28 +201,28 @@ void ComputeConstrictionSize::analyse() {
         fabric::Vec3(r->extent_xlo, r->extent_ylo, r->extent_zlo),
         fabric::Vec3(r->extent_xhi, r->extent_yhi, r->extent_zhi)};
   }
-  std::vector<fabric::Sphere> spheres = gather_group();
+  Grains grains = gather();
   fabric::ConstrictionNetwork net;
   char message[512] = "";
   if (comm->me == 0) {
     try {
-      net = fabric::constriction_network(spheres, options_);
+      net = fabric::constriction_network(grains.skeleton, options_);
     } catch (const std::exception &e) {
       snprintf(message, sizeof message, "Compute constriction/size: %s",
                e.what());
     }
   }
-  spheres = {};
   MPI_Bcast(message, sizeof message, MPI_CHAR, 0, world);
   if (message[0]) error->all(FLERR, message);
-  if (comm->me == 0) fill_vector(net);
+  if (comm->me == 0) fill_vector(net, grains);
+  grains = Grains();
   MPI_Bcast(vector, size_vector, MPI_DOUBLE, 0, world);
-  loose_verdict();
   fill_local(net);
   if (comm->me == 0) write_csd(net);
 }
 
-void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net) {
+void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net,
+                                          const Grains &g) {
   std::vector<double> p;
   for (int k = 1; k <= kPercentiles; ++k) p.push_back(5.0 * k);
   std::vector<double> by_number = fabric::csd_percentiles(net.discs, p, false);
@@ -224,6 +235,17 @@ void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net
   vector[kPercolation - 1] = net.percolation_diameter;
   vector[kControl - 1] =
       fabric::csd_percentiles(net.discs, {control_percent_}, false)[0];
+  // The verdict: loose grains finer than the controlling constriction and
+  // than the percolation opening, by mass.
+  vector[kLooseFinerControl - 1] = fabric::mass_percent_finer(
+      g.loose_diameter, g.loose_mass, vector[kControl - 1]);
+  vector[kLooseFinerPercolation - 1] = fabric::mass_percent_finer(
+      g.loose_diameter, g.loose_mass, net.percolation_diameter);
+  double loose = 0.0, all = 0.0;
+  for (double m : g.loose_mass) loose += m;
+  for (double m : g.skeleton_mass) all += m;
+  all += loose;
+  vector[kLooseMassPercent - 1] = all > 0.0 ? 100.0 * loose / all : 0.0;
   vector[kPores - 1] = net.pores;
   vector[kGrains - 1] = net.spheres;
   vector[kHidden - 1] = net.hidden;
@@ -245,27 +267,6 @@ void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net
              "diameters are NaN", net.wall_margin);
     error->warning(FLERR, m);
   }
-}
-
-void ComputeConstrictionSize::loose_verdict() {
-  // Sums: loose mass, loose finer than the controlling constriction, loose
-  // finer than the percolation opening, the group's mass.
-  double mine[4] = {0, 0, 0, 0}, all[4];
-  const double dc = vector[kControl - 1], dp = vector[kPercolation - 1];
-  for (int i = 0; i < atom->nlocal; ++i) {
-    const double m = atom->rmass[i], d = 2.0 * atom->radius[i];
-    if (skeleton(i)) mine[3] += m;
-    if (!loose(i)) continue;
-    mine[0] += m;
-    if (d < dc) mine[1] += m;
-    if (d < dp) mine[2] += m;
-  }
-  MPI_Allreduce(mine, all, 4, MPI_DOUBLE, MPI_SUM, world);
-  vector[kLooseFinerControl - 1] = all[0] > 0 ? 100.0 * all[1] / all[0] : 0.0;
-  vector[kLooseFinerPercolation - 1] =
-      all[0] > 0 ? 100.0 * all[2] / all[0] : 0.0;
-  vector[kLooseMassPercent - 1] =
-      all[0] + all[3] > 0 ? 100.0 * all[0] / (all[0] + all[3]) : 0.0;
 }
 
 void ComputeConstrictionSize::fill_local(const fabric::ConstrictionNetwork &net) {

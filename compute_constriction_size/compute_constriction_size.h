@@ -44,9 +44,14 @@ class ComputeConstrictionSize : public Compute {
  private:
   void parse(int narg, char **arg);
   void analyse();  // once per step
-  std::vector<fabric::Sphere> gather_group();
-  void fill_vector(const fabric::ConstrictionNetwork &net);
-  void loose_verdict();
+  // The pore-forming grains, and the loose grains' diameters and masses, on
+  // rank 0 in the order of the atom IDs (empty elsewhere).
+  struct Grains {
+    std::vector<fabric::Sphere> skeleton;
+    std::vector<double> skeleton_mass, loose_diameter, loose_mass;
+  };
+  Grains gather();
+  void fill_vector(const fabric::ConstrictionNetwork &net, const Grains &g);
   void fill_local(const fabric::ConstrictionNetwork &net);
   void write_csd(const fabric::ConstrictionNetwork &net);
   void update_classes();       // the fabric compute's classes, current
