@@ -104,11 +104,25 @@ void ComputeConstrictionSize::parse(int narg, char **arg) {
       control_percent_ = number(v, kw);
       if (!(control_percent_ >= 5.0 && control_percent_ <= 95.0))
         fail("control " + v + " must lie in [5, 95]");
+    } else if (kw == "psd") {
+      std::string file = value(i, "a PSD file");
+      try {
+        auto psd = fabric::ParticleSizeDistribution::read(file);
+        auto kz = fabric::kezdi(psd);
+        auto kl = fabric::kenney_lau(psd);
+        auto bu = fabric::burenkova(psd);
+        auto wf = fabric::wan_fell(psd);
+        double c[6] = {kz.max_ratio, kl.min_ratio, bu.h1, bu.h2,
+                       bu.stable() ? 1.0 : 0.0, wf.probability};
+        std::copy(c, c + 6, criteria_);
+      } catch (const std::exception &e) {
+        fail(e.what());
+      }
     } else if (kw == "csd") {
       csd_file_ = value(i, "a file name");
     } else {
       fail("unknown keyword '" + kw + "': allowed are container wall_margin "
-           "merge tolerance fabric loose control csd");
+           "merge tolerance fabric loose control psd csd");
     }
   }
 }
@@ -253,6 +267,7 @@ void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net
   vector[kOnEdge - 1] = net.on_edge;
   vector[kUnsolved - 1] = net.unsolved;
   vector[kWallMargin - 1] = net.wall_margin;
+  std::copy(criteria_, criteria_ + 6, vector + kKezdi - 1);
   char m[512];
   if (net.hidden > 0) {
     snprintf(m, sizeof m, "Compute constriction/size: %ld of %ld grains "

@@ -30,8 +30,10 @@ class ComputeConstrictionSize : public Compute {
   enum {
     kPercolation = 40, kControl, kLooseFinerControl, kLooseFinerPercolation,
     kLooseMassPercent, kPores, kGrains, kHidden, kWallExcluded, kOnEdge,
-    kUnsolved,
-    kWallMargin, kVectorSize = kWallMargin
+    kUnsolved, kWallMargin,
+    // The classical criteria of the PSD of keyword psd (0 without).
+    kKezdi, kKenneyLau, kBurenkovaH1, kBurenkovaH2, kBurenkovaStable,
+    kWanFell, kVectorSize = kWanFell
   };
 
   ComputeConstrictionSize(class LAMMPS *, int, int, char **);
@@ -61,6 +63,7 @@ class ComputeConstrictionSize : public Compute {
 
   fabric::ConstrictionOptions options_;
   std::string region_id_, loose_group_, csd_file_, fabric_id_;
+  double criteria_[6] = {0, 0, 0, 0, 0, 0};  // of keyword psd
   class Compute *fabric_ = nullptr;  // compute primary/fabric (keyword fabric)
   int loose_bit_ = 0;
   double control_percent_ = 35.0;

@@ -77,14 +77,24 @@ struct Cell {
   Vec3 orthocentre;
 };
 
+// CGAL's order of the cells and of the vertices in a cell may change from
+// run to run (it depends on memory addresses); every value computed here
+// takes the spheres in the order of their index, so it does not.
 std::vector<Cell> index_cells(RT& rt) {
   std::vector<Cell> cells;
   cells.reserve(rt.number_of_finite_cells());
+  auto centre = rt.geom_traits().construct_weighted_circumcenter_3_object();
   for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c) {
     c->info() = static_cast<long>(cells.size());
     Cell cell;
-    for (int k = 0; k < 4; ++k) cell.sphere[k] = c->vertex(k)->info();
-    cell.orthocentre = to_vec(rt.dual(c));
+    RT::Vertex_handle v[4];
+    for (int k = 0; k < 4; ++k) v[k] = c->vertex(k);
+    std::sort(v, v + 4, [](const auto& a, const auto& b) {
+      return a->info() < b->info();
+    });
+    for (int k = 0; k < 4; ++k) cell.sphere[k] = v[k]->info();
+    cell.orthocentre = to_vec(
+        centre(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point()));
     cells.push_back(cell);
   }
   return cells;
@@ -111,8 +121,9 @@ void for_each_inner_face(RT& rt, F&& f) {
     Face face;
     for (int k = 0, j = 0; k < 4; ++k)
       if (k != it->second) face.sphere[j++] = c->vertex(k)->info();
-    face.cell_a = c->info();
-    face.cell_b = n->info();
+    std::sort(face.sphere.begin(), face.sphere.end());
+    face.cell_a = std::min(c->info(), n->info());
+    face.cell_b = std::max(c->info(), n->info());
     f(face);
   }
 }
@@ -392,6 +403,13 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
       else
         ++net.unsolved;
     }
+  // The discs in an order of their own, not CGAL's.
+  std::sort(net.discs.begin(), net.discs.end(),
+            [](const ConstrictionDisc& a, const ConstrictionDisc& b) {
+              for (int k = 0; k < 3; ++k)
+                if (a.centre[k] != b.centre[k]) return a.centre[k] < b.centre[k];
+              return a.radius < b.radius;
+            });
   double perc = percolation(net.pores, std::move(edges), floor, lid);
   net.percolation_diameter = std::isfinite(perc) ? perc : 0.0;
   return net;

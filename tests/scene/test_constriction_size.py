@@ -28,7 +28,7 @@ R = 1.0005e-3       # lattice grain radius: overlaps of 1e-6 m
 N = 6               # grains per lattice edge
 D_OPEN = 2.0 * (A / math.sqrt(2.0) - R)
 FINE, COARSE = 0.5e-3, 1.0e-3   # loose diameters, alternating
-NV = 51
+NV = 57
 
 MATERIALS = """\
 pair_style      gran model hooke tangential history
@@ -202,6 +202,11 @@ def doc_examples(args, chk):
                 chk.check("example 1: %d ranks print the vector of 1 rank" % r,
                           vec[r] == v)
     text = lattice_scene() + blocks[1] + "run 0\n"
+    ex2 = os.path.join(args.work, "example2")
+    os.makedirs(ex2, exist_ok=True)
+    if not os.path.exists(os.path.join(ex2, "input_scripts")):
+        os.symlink(os.path.join(args.source, "input_scripts"),
+                   os.path.join(ex2, "input_scripts"))
     res = run(args, chk, "example2", text)
     if res:
         snaps = [f for f in os.listdir(os.path.join(args.work, "example2"))
