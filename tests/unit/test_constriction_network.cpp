@@ -233,3 +233,19 @@ TEST(ConstrictionNetwork, BadInput) {
   for (int i = 0; i < 5; ++i) flat.push_back({Vec3(i, i * i, 0), 0.3});
   EXPECT_THROW(fabric::constriction_network(flat, {}), std::invalid_argument);
 }
+
+TEST(ConstrictionNetwork, PercentilesByNumberAndByDiameterCubed) {
+  std::vector<fabric::ConstrictionDisc> d(4);
+  for (int i = 0; i < 4; ++i) d[i].radius = i < 3 ? 1.0 : 2.0;  // D 2, 2, 2, 4
+  // By number: linear between order statistics, 50 % at position 1.5.
+  auto n = fabric::csd_percentiles(d, {50.0, 95.0}, false);
+  EXPECT_DOUBLE_EQ(n[0], 2.0);
+  EXPECT_DOUBLE_EQ(n[1], 2.0 + 0.85 * 2.0);
+  // By D^3: weights 8, 8, 8, 64; the three small reach 27.3 % only.
+  auto c = fabric::csd_percentiles(d, {25.0, 50.0}, true);
+  EXPECT_DOUBLE_EQ(c[0], 2.0);
+  EXPECT_DOUBLE_EQ(c[1], 4.0);
+  auto cum = fabric::cumulative_csd(d);
+  EXPECT_NEAR(cum[2].percent_cubic, 100.0 * 24.0 / 88.0, 1e-12);
+  EXPECT_TRUE(std::isnan(fabric::csd_percentiles({}, {50.0}, false)[0]));
+}
