@@ -328,11 +328,12 @@ std::optional<Sphere> inscribed_pore_sphere(const std::array<Sphere, 4>& s) {
   return Sphere{u + rho * v, rho};
 }
 
-ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
-                                         const ConstrictionOptions& o) {
-  validate(spheres, o);
-  ConstrictionNetwork net;
-  net.spheres = static_cast<long>(spheres.size());
+namespace {
+
+// Inserts the spheres as weighted points (r^2); sets the container, the
+// wall margin and the count of hidden spheres.
+void triangulate(RT& rt, const std::vector<Sphere>& spheres,
+                 const ConstrictionOptions& o, ConstrictionNetwork& net) {
   Box bb{spheres[0].centre, spheres[0].centre};
   double dmax = 0.0;
   std::vector<std::pair<RT::Weighted_point, long>> points;
@@ -343,20 +344,30 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
     bb.lo = bb.lo.cwiseMin(s.centre - r);
     bb.hi = bb.hi.cwiseMax(s.centre + r);
     dmax = std::max(dmax, 2.0 * s.radius);
-    points.emplace_back(RT::Weighted_point(K::Point_3(s.centre.x(), s.centre.y(),
-                                                      s.centre.z()),
-                                           s.radius * s.radius),
-                        static_cast<long>(i));
+    points.emplace_back(
+        RT::Weighted_point(K::Point_3(s.centre.x(), s.centre.y(), s.centre.z()),
+                           s.radius * s.radius),
+        static_cast<long>(i));
   }
   net.container = o.container ? *o.container : bb;
   net.wall_margin = o.wall_margin >= 0.0 ? o.wall_margin : dmax;
-  RT rt(points.begin(), points.end());
-  points = {};
+  rt.insert(points.begin(), points.end());
   net.hidden = net.spheres - static_cast<long>(rt.number_of_vertices());
   if (rt.dimension() < 3)
     throw std::invalid_argument(
         "the grains' centres are coplanar (or fewer than 4 are visible to the "
         "regular triangulation): no pores");
+}
+
+}  // namespace
+
+ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
+                                         const ConstrictionOptions& o) {
+  validate(spheres, o);
+  ConstrictionNetwork net;
+  net.spheres = static_cast<long>(spheres.size());
+  RT rt;
+  triangulate(rt, spheres, o, net);
   std::vector<Cell> cells = index_cells(rt);
   net.cells = static_cast<long>(cells.size());
   Pores pores(net.cells);
@@ -399,9 +410,9 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
       if (op.disc) {
         net.discs.push_back(*op.disc);
         net.on_edge += op.disc->on_edge;
-      }
-      else
+      } else {
         ++net.unsolved;
+      }
     }
   // The discs in an order of their own, not CGAL's.
   std::sort(net.discs.begin(), net.discs.end(),
