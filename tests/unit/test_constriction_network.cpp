@@ -192,6 +192,19 @@ TEST(ConstrictionNetwork, LooseGrainsInTheLatticePoresLeaveThePrimaryCsd) {
   EXPECT_NEAR(fabric::mass_percent_finer(loose_d, loose_m, dc), expect, 1e-9);
 }
 
+TEST(ConstrictionNetwork, OverlapMergingAloneJoinsTheCubeOfSimpleCubic) {
+  // Tolerance 0: coincidence alone joins only what rounds alike; the
+  // inscribed pore spheres of a cube's tetrahedra are all the cube's
+  // centre sphere, so overlap joins every cube into one pore.
+  const double R = 1.0;
+  ConstrictionOptions o;
+  o.coincident_tolerance = 0.0;
+  o.merging = fabric::PoreMerging::overlap;
+  auto net = fabric::constriction_network(lattice(kSC, 2.0 * R, R, 6), o);
+  EXPECT_EQ(net.pores, 5 * 5 * 5);
+  expect_all(net, (std::sqrt(2.0) - 1.0) * R);
+}
+
 TEST(ConstrictionNetwork, OverlapMergingNeverAddsPores) {
   auto s = random_spheres(400, 11);
   ConstrictionOptions o;
