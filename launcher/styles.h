@@ -11,6 +11,7 @@
 
 #include "command_error.h"
 #include "command_psd_info.h"
+#include "compute_constriction_size.h"
 #include "compute_primary_fabric.h"
 #include "fix_sequential_pack.h"
 
@@ -43,7 +44,9 @@ inline std::vector<std::pair<std::string, FixCreator>> fixes() {
 
 inline std::vector<std::pair<std::string, ComputeCreator>> computes() {
   return {{"primary/fabric",
-           &make_compute<LAMMPS_NS::ComputePrimaryFabric>}};
+           &make_compute<LAMMPS_NS::ComputePrimaryFabric>},
+          {"constriction/size",
+           &make_compute<LAMMPS_NS::ComputeConstrictionSize>}};
 }
 
 inline std::vector<std::pair<std::string, CommandCreator>> commands() {

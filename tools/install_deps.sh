@@ -5,7 +5,7 @@
 set -euo pipefail
 packages=(liggghts libliggghts-dev liggghts-doc libopenmpi-dev openmpi-bin
           libeigen3-dev libgtest-dev cmake g++ make python3-numpy
-          python3-matplotlib python3-scipy xvfb)
+          python3-matplotlib python3-scipy xvfb libcgal-dev)
 if [ "${1:-}" = "--render" ]; then
   packages+=(paraview)
 fi

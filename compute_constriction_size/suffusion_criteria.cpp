@@ -1,0 +1,59 @@
+#include "suffusion_criteria.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fabric {
+
+double mass_percent_finer(const std::vector<double>& d,
+                          const std::vector<double>& m, double opening) {
+  double total = 0.0, finer = 0.0;
+  for (std::size_t i = 0; i < d.size() && i < m.size(); ++i) {
+    total += m[i];
+    if (d[i] < opening) finer += m[i];
+  }
+  return total > 0.0 ? 100.0 * finer / total : 0.0;
+}
+
+KezdiResult kezdi(const ParticleSizeDistribution& psd) {
+  KezdiResult r{0.0, 0.0};
+  for (int f = 1; f <= 99; ++f) {
+    const double F = f;
+    double coarse15 = psd.diameter_at_percent(F + 0.15 * (100.0 - F));
+    double fine85 = psd.diameter_at_percent(0.85 * F);
+    double ratio = coarse15 / fine85;
+    if (ratio > r.max_ratio) r = {ratio, F};
+  }
+  return r;
+}
+
+KenneyLauResult kenney_lau(const ParticleSizeDistribution& psd) {
+  const double fmax = psd.uniformity_coefficient() > 3.0 ? 20.0 : 30.0;
+  KenneyLauResult r{INFINITY, 0.0, fmax};
+  for (double F = 0.5; F <= fmax + 1e-9; F += 0.5) {
+    double d = psd.diameter_at_percent(F);
+    double H = psd.percent_passing(4.0 * d) - F;
+    if (H / F < r.min_ratio) r = {H / F, F, fmax};
+  }
+  return r;
+}
+
+bool BurenkovaResult::stable() const {
+  double l = std::log10(h2);
+  return 0.76 * l + 1.0 < h1 && h1 < 1.86 * l + 1.0;
+}
+
+BurenkovaResult burenkova(const ParticleSizeDistribution& psd) {
+  double d90 = psd.diameter_at_percent(90.0);
+  return {d90 / psd.diameter_at_percent(60.0),
+          d90 / psd.diameter_at_percent(15.0)};
+}
+
+WanFellResult wan_fell(const ParticleSizeDistribution& psd) {
+  double h1 = psd.diameter_at_percent(90.0) / psd.diameter_at_percent(60.0);
+  double h2 = psd.diameter_at_percent(20.0) / psd.diameter_at_percent(5.0);
+  double z = 2.378 * std::log10(h2) - 3.648 * h1 + 3.701;
+  return {h1, h2, 1.0 / (1.0 + std::exp(-z))};
+}
+
+}  // namespace fabric

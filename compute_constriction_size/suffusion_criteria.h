@@ -1,0 +1,61 @@
+// Suffusion verdicts from a grading: the share of the loose grains that fit
+// through the primary fabric's constrictions, and the classical geometric
+// criteria of internal stability computed from the same PSD (see
+// docs/compute_constriction_size.md and results/constriction/README.md).
+//
+// Plain C++, no LIGGGHTS include. Diameters at a percent passing come from
+// ParticleSizeDistribution (linear in log d between sieve points).
+#ifndef FABRIC_SUFFUSION_CRITERIA_H
+#define FABRIC_SUFFUSION_CRITERIA_H
+
+#include <vector>
+
+#include "psd.h"
+
+namespace fabric {
+
+// Percent of the total mass of grains (diameters d, masses m) whose diameter
+// is below `opening`. 0 when there is no mass.
+double mass_percent_finer(const std::vector<double>& d,
+                          const std::vector<double>& m, double opening);
+
+// Kezdi (1979): split the grading at F % passing into a fine and a coarse
+// part; D'15 is the 15 % size of the coarse part, d'85 the 85 % size of the
+// fine part. Internally stable if D'15/d'85 <= 4 at every split; here the
+// largest ratio over the splits F = 1, 2, ..., 99 %.
+struct KezdiResult {
+  double max_ratio, at_percent;
+  bool stable() const { return max_ratio <= 4.0; }
+};
+KezdiResult kezdi(const ParticleSizeDistribution& psd);
+
+// Kenney & Lau (1985; revised boundary 1986): F the % finer than d, H the %
+// between d and 4d; stable if H/F >= 1 for every F up to 20 % (widely
+// graded, Cu > 3) or 30 % (narrowly graded, Cu <= 3). Here the smallest
+// H/F over F = 0.5, 1.0, ... up to that bound.
+struct KenneyLauResult {
+  double min_ratio, at_percent, f_max;
+  bool stable() const { return min_ratio >= 1.0; }
+};
+KenneyLauResult kenney_lau(const ParticleSizeDistribution& psd);
+
+// Burenkova (1993): h' = d90/d60, h'' = d90/d15; non-suffusive inside
+// 0.76 log10(h'') + 1 < h' < 1.86 log10(h'') + 1.
+struct BurenkovaResult {
+  double h1, h2;  // h', h''
+  bool stable() const;
+};
+BurenkovaResult burenkova(const ParticleSizeDistribution& psd);
+
+// Wan & Fell (2008), silt-sand-gravel soils: probability of internal
+// instability P = e^Z / (1 + e^Z), Z = 2.378 log10(h'') - 3.648 h' + 3.701,
+// h' = d90/d60, h'' = d20/d5; here unstable if P > 0.5.
+struct WanFellResult {
+  double h1, h2, probability;
+  bool stable() const { return probability <= 0.5; }
+};
+WanFellResult wan_fell(const ParticleSizeDistribution& psd);
+
+}  // namespace fabric
+
+#endif

@@ -1,0 +1,198 @@
+#!/usr/bin/python3
+"""The suffusion verdict of compute constriction/size on the specimens of an
+oedometer study (tools/oedometer_study.py): per run, the final state
+(OUT/runs/NAME/final.dump, with the class c_pf[2] of compute primary/fabric)
+is read into the launcher, grouped into primary (class 1) and loose (0)
+grains, and compute constriction/size gives the CSD of the primary fabric
+(loose group: the verdict; psd: the classical criteria) and of the whole
+specimen. Writes, into --dest:
+  verdict.csv           one row per run
+  csd_NAME.txt          the two cumulative CSDs (files of the compute)
+  fig_NAME.png          PSD, PFD, LPD and the two CSDs on one size axis
+
+    /usr/bin/python3 results/constriction/verdict.py --study out/small \
+        --launcher build/liggghts-fabric --dest results/constriction/small
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+
+import numpy as np
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+NV = 57
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+
+def read_dump(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    i = max(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    cols = lines[i].split()[2:]
+    rows = np.array([[float(v) for v in l.split()] for l in lines[i + 1:] if l.strip()])
+    return {c: rows[:, k] for k, c in enumerate(cols)}
+
+
+def write_data(path, g):
+    cls = g["c_pf[2]"]
+    d = 2.0 * g["radius"]
+    rho = g["mass"] / (np.pi / 6.0 * d ** 3)
+    lo = min(g[a].min() - g["radius"].max() for a in "xyz") - 1e-3
+    hi = max(g[a].max() + g["radius"].max() for a in "xyz") + 1e-3
+    with open(path, "w") as f:
+        f.write("grains of an oedometer run: type 1 primary, 2 loose\n\n"
+                "%d atoms\n2 atom types\n\n" % len(d))
+        for a in "xyz":
+            f.write("%.17g %.17g %slo %shi\n" % (lo, hi, a, a))
+        f.write("\nAtoms\n\n")
+        for k in range(len(d)):
+            f.write("%d %d %.17g %.17g %.17g %.17g %.17g\n" % (
+                int(g["id"][k]), 1 if cls[k] == 1 else 2, d[k], rho[k],
+                g["x"][k], g["y"][k], g["z"][k]))
+
+
+SCRIPT = """units si
+atom_style granular
+atom_modify map array sort 0 0.0
+boundary f f f
+newton off
+communicate single vel yes
+read_data grains.data
+group primary type 1
+group loose type 2
+compute cp primary constriction/size loose loose psd {psd} csd csd_primary.txt
+compute ca all constriction/size psd {psd} csd csd_all.txt
+thermo_style custom step {cp}
+thermo_modify format float %.17g
+run 0
+thermo_style custom step {ca}
+thermo_modify format float %.17g
+run 0
+"""
+
+
+def vectors(text):
+    out = {}
+    lines = text.splitlines()
+    for i, l in enumerate(lines):
+        m = l.split()
+        if len(m) > 1 and m[0] == "Step" and m[1] in ("cp[1]", "ca[1]"):
+            for n in lines[i + 1:i + 4]:
+                v = n.split()
+                if len(v) == NV + 1 and v[0].isdigit():
+                    out[m[1][:2]] = [float(x) for x in v[1:]]
+                    break
+    return out
+
+
+def read_psd(path):
+    pts = np.array([[float(v) for v in l.split()[:2]] for l in open(path)
+                    if l.strip() and not l.lstrip().startswith("#")])
+    return pts[:, 0], pts[:, 1]
+
+
+def cumulative(d, m, total):
+    o = np.argsort(d)
+    return d[o], 100.0 * np.cumsum(m[o]) / total
+
+
+def figure(path, name, psd, g, csd_p, csd_a, vp):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    ax.plot(psd[0] * 1e3, psd[1], "k-", lw=2, label="PSD (input)")
+    total = g["mass"].sum()
+    d = 2.0 * g["radius"]
+    prim = g["c_pf[2]"] == 1
+    for sel, lab, st in ((prim, "PFD (primary)", "b-"), (~prim, "LPD (loose)", "r-")):
+        x, y = cumulative(d[sel], g["mass"][sel], total)
+        ax.step(x * 1e3, y, st, where="post", label=lab)
+    for c, lab, st in ((csd_p, "CSD primary fabric", "g--"), (csd_a, "CSD whole specimen", "m:")):
+        if len(c):
+            ax.plot(c[:, 0] * 1e3, c[:, 1], st, label=lab + " (by number)")
+    ax.axvline(vp[40] * 1e3, color="g", lw=0.8)
+    ax.axvline(vp[39] * 1e3, color="g", lw=0.8, ls="-.")
+    ax.set_xscale("log")
+    ax.set_xlabel("diameter (mm); green lines: D_c35 and percolation opening of the primary fabric")
+    ax.set_ylabel("% finer (PSD, PFD, LPD: of the mass)")
+    ax.set_ylim(0, 100)
+    ax.set_title(name + " (small size, side 3.3)")
+    ax.legend(fontsize=7, loc="upper left")
+    ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def load_csd(path):
+    rows = [l.split() for l in open(path) if not l.startswith("#")]
+    return np.array([[float(v) for v in r] for r in rows]) if rows else np.zeros((0, 3))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--study", required=True)
+    ap.add_argument("--launcher", default=os.path.join(ROOT, "build", "liggghts-fabric"))
+    ap.add_argument("--dest", required=True)
+    a = ap.parse_args()
+    os.makedirs(a.dest, exist_ok=True)
+    runs = sorted(os.listdir(os.path.join(a.study, "runs")))
+    table = []
+    for name in runs:
+        run = os.path.join(a.study, "runs", name)
+        dump = os.path.join(run, "final.dump")
+        if not os.path.isfile(dump):
+            continue
+        soil = re.search(r"cu\d\.\d", name).group(0)
+        psd = os.path.join(ROOT, "input_scripts", "psd", soil + ".txt")
+        g = read_dump(dump)
+        work = os.path.join(a.study, "constriction", name)
+        os.makedirs(work, exist_ok=True)
+        write_data(os.path.join(work, "grains.data"), g)
+        with open(os.path.join(work, "in.csd"), "w") as f:
+            f.write(SCRIPT.format(psd=psd, cp=" ".join("c_cp[%d]" % i for i in range(1, NV + 1)),
+                                  ca=" ".join("c_ca[%d]" % i for i in range(1, NV + 1))))
+        res = subprocess.run([a.launcher, "-in", "in.csd", "-log", "log.csd"], cwd=work,
+                             capture_output=True, text=True, errors="replace")
+        v = vectors(res.stdout)
+        if res.returncode != 0 or len(v) != 2:
+            print("%s: the launcher failed:\n%s" % (name, res.stdout[-2000:]))
+            continue
+        vp, va = v["cp"], v["ca"]
+        csd_p = load_csd(os.path.join(work, "csd_primary.txt"))
+        csd_a = load_csd(os.path.join(work, "csd_all.txt"))
+        with open(os.path.join(a.dest, "csd_%s.txt" % name), "w") as f:
+            f.write("# %s: cumulative CSDs of compute constriction/size\n"
+                    "# set diameter_m percent_finer_by_number percent_finer_by_d3\n" % name)
+            for lab, c in (("primary", csd_p), ("all", csd_a)):
+                for r in c:
+                    f.write("%s %.9g %.6f %.6f\n" % (lab, r[0], r[1], r[2]))
+        figure(os.path.join(a.dest, "fig_%s.png" % name), name, read_psd(psd), g, csd_p, csd_a, vp)
+        prim = g["c_pf[2]"] == 1
+        table.append({
+            "run": name, "grains": len(prim), "primary_grains": int(prim.sum()),
+            "primary_mass_percent": round(100 - vp[43], 3),
+            "constrictions_primary": int(vp[0]), "Dc35_primary_m": "%.5g" % vp[40],
+            "percolation_primary_m": "%.5g" % vp[39],
+            "loose_finer_Dc35_percent": round(vp[41], 3),
+            "loose_finer_percolation_percent": round(vp[42], 3),
+            "Dc35_all_m": "%.5g" % va[40], "percolation_all_m": "%.5g" % va[39],
+            "kezdi_max_ratio": round(vp[51], 3), "kezdi": "stable" if vp[51] <= 4 else "unstable",
+            "kenney_lau_min_HF": round(vp[52], 3), "kenney_lau": "stable" if vp[52] >= 1 else "unstable",
+            "burenkova_h1": round(vp[53], 3), "burenkova_h2": round(vp[54], 3),
+            "burenkova": "stable" if vp[55] == 1 else "suffusive",
+            "wan_fell_P": round(vp[56], 3), "wan_fell": "stable" if vp[56] <= 0.5 else "unstable",
+        })
+        print("%-28s primary %5.1f %% by mass; Dc35 %.4g m, percolation %.4g m; loose finer: %.1f %% / %.1f %%"
+              % (name, table[-1]["primary_mass_percent"], vp[40], vp[39], vp[41], vp[42]))
+    if table:
+        with open(os.path.join(a.dest, "verdict.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(table[0]))
+            w.writeheader()
+            w.writerows(table)
+
+
+if __name__ == "__main__":
+    main()

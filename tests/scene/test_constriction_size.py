@@ -1,0 +1,260 @@
+#!/usr/bin/python3
+"""Scene test: compute constriction/size through the launcher.
+
+1. A simple cubic lattice of slightly overlapping grains (so each carries
+   loaded contacts at run 0) with fine grains at the cube centres (no
+   contacts: loose). With `fabric pf` the pores are the lattice's: every
+   constriction diameter, D_c5..D_c95 and the percolation opening, is
+   2 (a / sqrt 2 - R); the loose grains finer than it (half of them, 0.5 mm)
+   are counted as passing by their mass, the coarser (1.0 mm) not; `loose`
+   with a group gives the same verdict. The whole specimen (no `fabric`)
+   gives finer constrictions. 1, 2 and 4 ranks print the same vector to the
+   last digit, and the local discs number entry 1.
+2. The examples of docs/compute_constriction_size.md run as written (the
+   second in the lattice scene, where compute pf exists); the first prints
+   the same vector on 1, 2 and 4 ranks.
+3. Bad input stops with an error (3 grains, a sphere container, an unknown
+   keyword, a fabric compute of another style) and a grain hidden inside
+   another is counted with a warning.
+"""
+import math
+import os
+import re
+
+import scene_util as su
+
+A = 2e-3            # lattice spacing (m)
+R = 1.0005e-3       # lattice grain radius: overlaps of 1e-6 m
+N = 6               # grains per lattice edge
+D_OPEN = 2.0 * (A / math.sqrt(2.0) - R)
+FINE, COARSE = 0.5e-3, 1.0e-3   # loose diameters, alternating
+NV = 57
+
+MATERIALS = """\
+pair_style      gran model hooke tangential history
+pair_coeff      * *
+fix m1 all property/global youngsModulus peratomtype 5.e6 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.3 0.3 0.3 0.3
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+fix m5 all property/global characteristicVelocity scalar 0.1
+neigh_modify    delay 0
+timestep        1e-7
+"""
+
+
+def lattice_scene(processors=None):
+    lo, hi = -2 * A, (N + 1) * A
+    text = su.preamble(processors=processors)
+    text += ("region          box block %s %s %s %s %s %s units box\n"
+             "create_box      2 box\n" % ((su.num(lo), su.num(hi)) * 3))
+    for i in range(N):
+        for j in range(N):
+            for k in range(N):
+                text += "create_atoms 1 single %s %s %s units box\n" % (
+                    su.num(i * A), su.num(j * A), su.num(k * A))
+    n = 0
+    for i in range(N - 1):
+        for j in range(N - 1):
+            for k in range(N - 1):
+                n += 1
+                text += "create_atoms 2 single %s %s %s units box\n" % (
+                    su.num((i + .5) * A), su.num((j + .5) * A), su.num((k + .5) * A))
+                text += "set atom %d diameter %s density 2650\n" % (
+                    N ** 3 + n, su.num(FINE if n % 2 else COARSE))
+    text += "set type 1 diameter %s density 2650\n" % su.num(2 * R)
+    text += MATERIALS
+    text += "compute pf all primary/fabric intervals 3\n"
+    text += "group fines type 2\n"
+    return text
+
+
+def thermo_vector(cid):
+    return ("thermo_style custom step %s\nthermo_modify format float %%.17g\n"
+            % " ".join("c_%s[%d]" % (cid, i) for i in range(1, NV + 1)))
+
+
+def last_thermo(text, cid):
+    """The vector of compute `cid` from the last thermo block that prints it."""
+    lines = text.splitlines()
+    out = None
+    for i, l in enumerate(lines):
+        if l.split()[:2] != ["Step", "%s[1]" % cid]:
+            continue
+        for m in lines[i + 1:i + 4]:   # a warning may come between
+            vals = m.split()
+            if len(vals) == NV + 1 and vals[0].isdigit():
+                out = [float(v) for v in vals[1:]]
+                break
+    return out
+
+
+def local_rows(path):
+    """The rows of the last snapshot of a dump local."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.startswith("ITEM: ENTRIES"))
+    return [[float(v) for v in l.split()] for l in lines[start + 1:] if l.strip()]
+
+
+def run(args, chk, name, text, nprocs=None, timeout=None):
+    inp = su.write_file(os.path.join(args.work, name, "in." + name), text)
+    res = su.run_launcher(args, inp, nprocs=nprocs, timeout=timeout)
+    ok = chk.check("%s runs (%.1f s)" % (name, res.seconds),
+                   res.returncode == 0 and not res.errors(), res.describe())
+    return res if ok else None
+
+
+def lattice_checks(args, chk):
+    fine_m, coarse_m = 0.0, 0.0
+    for n in range(1, (N - 1) ** 3 + 1):
+        if n % 2:
+            fine_m += FINE ** 3
+        else:
+            coarse_m += COARSE ** 3
+    expect_pass = 100.0 * fine_m / (fine_m + coarse_m)
+    vectors = {}
+    for ranks in (None, 2, 4):
+        text = lattice_scene(processors="1 1 %d" % ranks if ranks else None)
+        text += ("compute cs all constriction/size fabric pf\n"
+                 "compute cl type1 constriction/size loose fines\n"
+                 "compute ca all constriction/size\n").replace(
+            "type1", "lat")
+        text = text.replace("group fines type 2\n",
+                            "group fines type 2\ngroup lat type 1\n")
+        text += ("dump dl all local 1 discs.txt c_cs[1] c_cs[2] c_cs[3] "
+                 "c_cs[4] c_cs[5] c_cs[6] c_cs[7]\n")
+        text += thermo_vector("cs") + "run 0\n"
+        text += thermo_vector("cl") + "run 0\n"
+        text += thermo_vector("ca") + "run 0\n"
+        name = "lattice_np%d" % (ranks or 1)
+        res = run(args, chk, name, text, nprocs=ranks)
+        if not res:
+            continue
+        vs = [last_thermo(res.text, c) for c in ("cs", "cl", "ca")]
+        if not chk.check("%s prints the three vectors" % name, all(vs)):
+            continue
+        vectors[ranks or 1] = vs
+        if ranks:
+            continue
+        cs, cl, ca = vs
+        chk.check("fabric pf: D_c5..D_c95 and D_c by D^3 all %.9g (got %.9g..%.9g)"
+                  % (D_OPEN, min(cs[1:39]), max(cs[1:39])),
+                  all(abs(v - D_OPEN) < 1e-9 * D_OPEN for v in cs[1:39]))
+        chk.check("percolation opening %.9g = D_open" % cs[39],
+                  abs(cs[39] - D_OPEN) < 1e-9 * D_OPEN)
+        chk.check("loose finer than D_c35: %.6f %% = %.6f %% (the 0.5 mm ones)"
+                  % (cs[41], expect_pass), abs(cs[41] - expect_pass) < 1e-6)
+        chk.check("loose finer than the percolation opening: %.6f %%" % cs[42],
+                  abs(cs[42] - expect_pass) < 1e-6)
+        chk.check("triangulated grains %d = the lattice's %d" % (cs[45], N ** 3),
+                  cs[45] == N ** 3)
+        chk.check("loose group gives the same CSD and verdict",
+                  cl[:39] == cs[:39] and abs(cl[41] - cs[41]) < 1e-9)
+        chk.check("the whole specimen (fines split the pores): %d > %d "
+                  "constrictions, D_c5 %.4g finer than %.4g"
+                  % (ca[0], cs[0], ca[1], D_OPEN),
+                  ca[0] > cs[0] and ca[1] < 0.99 * D_OPEN)
+        rows = local_rows(os.path.join(args.work, name, "discs.txt"))
+        chk.check("the dump local (6 digits) holds entry 1 = %d discs of radius D_open/2"
+                  % cs[0], len(rows) == int(cs[0]) and all(
+                      abs(r[6] - D_OPEN / 2) < 1e-5 * D_OPEN for r in rows))
+    if 1 in vectors:
+        for r in (2, 4):
+            if r in vectors:
+                chk.check("lattice: %d ranks print the vectors of 1 rank" % r,
+                          vectors[r] == vectors[1])
+
+
+def doc_examples(args, chk):
+    page = os.path.join(args.source, "docs", "compute_constriction_size.md")
+    with open(page) as f:
+        t = f.read()
+    sec = t[t.index("## Examples"):t.index("## Description")]
+    blocks = re.findall(r"```\n(.*?)```", sec, re.S)
+    if not chk.check("the page has two examples", len(blocks) == 2):
+        return
+    root = os.path.join(args.work, "doc")
+    os.makedirs(root, exist_ok=True)
+    link = os.path.join(root, "input_scripts")
+    if not os.path.exists(link):
+        os.symlink(os.path.join(args.source, "input_scripts"), link)
+    vec = {}
+    for ranks in (None, 2, 4):
+        text = blocks[0] + thermo_vector("csd") + "run 0\n"
+        inp = su.write_file(os.path.join(root, "in.ex1_np%d" % (ranks or 1)), text)
+        res = su.run_launcher(args, inp, nprocs=ranks, cwd=root, timeout=300)
+        ok = chk.check("example 1 runs as written on %d rank(s) (%.1f s)"
+                       % (ranks or 1, res.seconds),
+                       res.returncode == 0 and not res.errors(), res.describe())
+        if ok:
+            vec[ranks or 1] = last_thermo(res.text, "csd")
+    if vec.get(1):
+        v = vec[1]
+        chk.check("example 1: %d constrictions, D_c35 %.3g <= D_c50 %.3g, %d pores"
+                  % (v[0], v[7], v[10], v[44]),
+                  v[0] > 100 and 0 < v[7] <= v[10] and v[44] > v[0] / 10)
+        with open(os.path.join(root, "csd_all.txt")) as f:
+            rows = [l for l in f if not l.startswith("#")]
+        chk.check("csd_all.txt has entry 1 = %d rows" % len(rows), len(rows) == v[0])
+        for r in (2, 4):
+            if vec.get(r):
+                chk.check("example 1: %d ranks print the vector of 1 rank" % r,
+                          vec[r] == v)
+    text = lattice_scene() + blocks[1] + "run 0\n"
+    ex2 = os.path.join(args.work, "example2")
+    os.makedirs(ex2, exist_ok=True)
+    if not os.path.exists(os.path.join(ex2, "input_scripts")):
+        os.symlink(os.path.join(args.source, "input_scripts"),
+                   os.path.join(ex2, "input_scripts"))
+    res = run(args, chk, "example2", text)
+    if res:
+        snaps = [f for f in os.listdir(os.path.join(args.work, "example2"))
+                 if f.startswith("discs_")]
+        chk.check("example 2 writes the discs (%s)" % snaps, len(snaps) == 1)
+
+
+def bad_input(args, chk):
+    base = su.header(0.01) + su.MATERIALS
+    three = "".join("create_atoms 1 single %s 0.005 0.005 units box\n"
+                    % su.num(0.002 + 0.002 * i) for i in range(3))
+    cases = [
+        ("three grains", three + "set type 1 diameter 0.002 density 2650\n"
+         "compute c all constriction/size\nthermo_style custom step c_c[1]\nrun 0\n"),
+        ("sphere container", "region s sphere 0 0 0 1 units box\n"
+         "compute c all constriction/size container s\nrun 0\n"),
+        ("unknown keyword", "compute c all constriction/size walls 1\n"),
+        ("fabric of another style", "compute k all ke\n"
+         "compute c all constriction/size fabric k\nthermo_style custom step c_c[1]\nrun 0\n"),
+    ]
+    for what, tail in cases:
+        inp = su.write_file(os.path.join(args.work, "bad", "in.bad"), base + tail)
+        res = su.run_launcher(args, inp, timeout=60)
+        chk.check("%s: an ERROR, no crash" % what,
+                  not res.crashed() and not res.timed_out and res.errors(),
+                  res.describe())
+    # A fine grain inside a coarse one: hidden, counted, warned.
+    text = lattice_scene() + ("create_atoms 2 single %s %s %s units box\n"
+                              "set atom %d diameter 2e-4 density 2650\n"
+                              % (su.num(A + 1e-4), su.num(A), su.num(A),
+                                 N ** 3 + (N - 1) ** 3 + 1))
+    text += "compute cs all constriction/size\n" + thermo_vector("cs") + "run 0\n"
+    res = run(args, chk, "hidden", text)
+    if res:
+        v = last_thermo(res.text, "cs")
+        chk.check("the hidden grain is counted (entry 47 = %s) with a warning"
+                  % (v and v[46]), v and v[46] == 1 and re.search(
+                      r"WARNING: Compute constriction/size: 1 of", res.text))
+
+
+def main():
+    args = su.parse_args(__doc__)
+    chk = su.Checker()
+    lattice_checks(args, chk)
+    doc_examples(args, chk)
+    bad_input(args, chk)
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()
