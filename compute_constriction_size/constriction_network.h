@@ -24,6 +24,7 @@
 #include <optional>
 #include <vector>
 
+#include "box.h"
 #include "trilateration.h"
 
 namespace fabric {
@@ -31,11 +32,6 @@ namespace fabric {
 enum class PoreMerging {
   coincident,  // tetrahedra with coincident weighted circumcentres
   overlap      // also neighbours whose inscribed pore spheres overlap
-};
-
-// An axis-aligned box: lo[0..2], hi[0..2].
-struct Box {
-  Vec3 lo, hi;
 };
 
 struct ConstrictionOptions {

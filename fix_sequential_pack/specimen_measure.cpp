@@ -121,10 +121,6 @@ double chord_integral(double R, double u, double v) {
 
 }  // namespace
 
-double Box::volume() const {
-  return (hi - lo).cwiseMax(0.0).prod();
-}
-
 double disc_rectangle_area(double R, double x0, double x1, double y0,
                            double y1) {
   if (!(R > 0.0)) return 0.0;

@@ -21,14 +21,10 @@
 #include <utility>
 #include <vector>
 
+#include "box.h"
 #include "trilateration.h"
 
 namespace fabric {
-
-struct Box {
-  Vec3 lo, hi;
-  double volume() const;
-};
 
 // Volume of the part of the sphere (c, r) inside the box: closed form when
 // at most one face cuts the sphere, else the closed-form disc-rectangle area
