@@ -201,11 +201,12 @@ void FixSequentialPack::parse(int narg, char **arg) {
       need_value(i, kw, "yes or no");
       fill_pores_ = yesno(arg[i + 1], kw);
     } else if (strcmp(kw, "layering") == 0) {
-      need_value(i, kw, "a positive number (ln radius)");
+      need_value(i, kw, "a positive number (share of the list's solid volume)");
       layering_ = number(arg[i + 1], kw);
       if (!(layering_ > 0.0))
         fail("layering " + std::string(arg[i + 1]) +
-             " must be positive (width of the size preference in ln radius)");
+             " must be positive (width of the coarse-to-fine schedule, as a "
+             "share of the list's solid volume)");
     } else if (strcmp(kw, "start") == 0) {
       need_value(i, kw, "auto, floor_ceiling, floor or centre");
       if (strcmp(arg[i + 1], "auto") == 0)
