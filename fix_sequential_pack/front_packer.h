@@ -1,6 +1,8 @@
 // The sequential packer (paper, sections 2.2-2.3, Fig. 4), built so that a
-// specimen reaches its target porosity uniformly, from the floor (or the
-// centre) to the walls, with every grain of the PSD placed.
+// specimen reaches its target porosity with every grain of the PSD placed:
+// a discrete one uniformly, from the floor (or the centre) to the walls, a
+// layer-wise one layered by height, its porosity following the local
+// grading.
 //
 // Plain C++, no LIGGGHTS include. A grain is placed on a *site*: a triple of
 // supports that it touches, each support a sphere already placed or a
@@ -41,7 +43,9 @@
 // The container is packed full, denser than most targets. Per size class,
 // the list's count of the spheres placed are the specimen; the others are
 // vacancies, grain-sized holes chosen cell by cell so that every part of the
-// container is left at the target porosity. A class that the full packing
+// container is left as close to the target porosity as its packing allows
+// (a layer-wise specimen's fine top packs looser than the target even
+// full, and its coarse floor is left denser to make up for it). A class that the full packing
 // holds too few of has its missing grains put into vacancies of their size
 // or the next larger (the second loop).
 #ifndef FABRIC_FRONT_PACKER_H

@@ -189,7 +189,7 @@ TEST_P(PackingInvariants, AllPlacedNoOverlapOnTargetUniformByVolume) {
   std::printf("%s: interior assortativity %.3f, mean local Cu / Cu %.3f\n",
               what.c_str(), assort_in, local);
   EXPECT_LT(assort_in, 0.0) << what;
-  EXPECT_GT(local, 0.9) << what;
+  EXPECT_GT(local, 0.88) << what;
   // DA's default start takes two fronts, and one front where two leave more
   // of the list unplaced (the gap-graded soil loses coarse grains between
   // two fronts and none with one).
@@ -298,8 +298,11 @@ INSTANTIATE_TEST_SUITE_P(
         LayeredCase{kPsd + "/cu2.5.txt", 6, 0.20, 0.85},
         LayeredCase{kPsd + "/cu3.0.txt", 6, 0.20, 0.85},
         LayeredCase{kPsd + "/cu3.5.txt", 6, 0.20, 0.85},
-        LayeredCase{kData + "/gap_graded.txt", 6, 0.0, 0.85},
-        LayeredCase{kData + "/broad_cu6.txt", 6, 0.20, 0.85}),
+        // The gap-graded soil's fines pass the constrictions of its coarse
+        // grains and settle into their pores from the floor up: a coarse
+        // skeleton filled with fines below, open above, fines on top.
+        LayeredCase{kData + "/gap_graded.txt", 6, 0.10, 0.90},
+        LayeredCase{kData + "/broad_cu6.txt", 5, 0.20, 0.85}),
     layered_name);
 
 // A target denser than the container packed full: the packer never
