@@ -143,6 +143,9 @@ class Discrete : public Rule {
 class GradedBed : public Rule {
  public:
   GradedBed(const Sizes& sizes, double width) : width_(width) {
+    if (!(width > 0.0 && std::isfinite(width)))
+      throw std::invalid_argument("layering must be positive and finite, got " +
+                                  std::to_string(width));
     const int n = static_cast<int>(sizes.count.size());
     double total = 0.0;
     for (int i = 0; i < n; ++i) total += sizes.count[i] * sizes.volume[i];
@@ -449,10 +452,6 @@ long long checked_total(const PackingSpec& spec) {
       throw std::invalid_argument(
           "container is narrower than the largest sphere (diameter " +
           std::to_string(2.0 * rmax) + ")");
-  if (spec.arrangement == Arrangement::layerwise &&
-      !(spec.layering > 0.0 && std::isfinite(spec.layering)))
-    throw std::invalid_argument("layering must be positive and finite, got " +
-                                std::to_string(spec.layering));
   return total;
 }
 
