@@ -25,6 +25,10 @@
 
 namespace fabric {
 
+// The layers of the profile by height that a specimen's summary reports
+// (PackingMeasure::layer_profile), floor first.
+constexpr int kProfileLayers = 6;
+
 struct Box {
   Vec3 lo, hi;
   double volume() const;
