@@ -26,7 +26,6 @@ std::string to_string(Start s) {
   return "?";
 }
 
-
 std::string to_string(Placement p) {
   static const char* names[kPlacementKinds] = {
       "first face", "trilateration", "constriction centre", "touching two",
@@ -72,6 +71,7 @@ struct Random {
   }
 };
 
+// Each deck is the list plus this many grains of each size (new_deck()).
 constexpr long long kDeckExtra = 2;
 // DA: how much faster than by number the coarsest size is drawn (x^2
 // between).

@@ -27,8 +27,9 @@
 // random sequence drawn by number from decks (the particle list, shuffled);
 // a drawn grain waits for the next site that fits it, so coarse grains are
 // not replaced by fines on the spot. Both arrangement rules place a drawn
-// grain on the lowest (nearest) site that fits it; they differ only in the
-// draw (the Rule classes of front_packer.cpp, the one place they differ):
+// grain on the lowest (nearest) site that fits it; they differ in the draw
+// (and in which face spheres a Fig. 8 grain touches, and the default
+// start), all in the Rule classes of front_packer.cpp, the one place:
 //   discrete  (DA): sizes drawn by number, in random order: fines end up
 //                   between coarse grains, a homogeneous mixture;
 //   layerwise (LA): a graded bed, the sediment of a soil dumped from a
@@ -45,9 +46,9 @@
 // vacancies, grain-sized holes chosen cell by cell so that every part of the
 // container is left as close to the target porosity as its packing allows
 // (a layer-wise specimen's fine top packs looser than the target even
-// full, and its coarse floor is left denser to make up for it). A class that the full packing
-// holds too few of has its missing grains put into vacancies of their size
-// or the next larger (the second loop).
+// full, and its coarse floor is left denser to make up for it). A class
+// that the full packing holds too few of has its missing grains put into
+// vacancies of their size or the next larger (the second loop).
 #ifndef FABRIC_FRONT_PACKER_H
 #define FABRIC_FRONT_PACKER_H
 
