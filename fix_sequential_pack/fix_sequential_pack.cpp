@@ -167,10 +167,10 @@ void FixSequentialPack::read_keywords(const StyleArgs &args) {
     } else if (kw == "fill_pores") {
       fill_pores_ = args.yes_no(i);
     } else if (kw == "layering") {
-      layering_ = args.number(i, "a positive number (ln radius)");
+      layering_ = args.number(i, "a positive number (share of the list's solid volume)");
       args.require(layering_ > 0.0, i,
-                   "must be positive (width of the size preference in ln "
-                   "radius)");
+                   "must be positive (width of the coarse-to-fine schedule, "
+                   "as a share of the list's solid volume)");
     } else if (kw == "start") {
       start_ = starts[args.choice(i, {"auto", "floor_ceiling", "floor",
                                       "centre"})];
@@ -533,7 +533,26 @@ std::string FixSequentialPack::summary_figures(
            signed_or(v.interior_size_assortativity, "none").c_str(),
            signed_or(v.radius_distance_spearman, "none (undefined)").c_str(),
            v.seconds, v.seconds > 0 ? res.placed() / v.seconds : 0.0);
-  return b;
+  return b + profile_figures(v);
+}
+
+std::string FixSequentialPack::profile_figures(const fabric::PackVector &v) {
+  const double porosity[] = {v.layer1_porosity, v.layer2_porosity,
+                             v.layer3_porosity, v.layer4_porosity,
+                             v.layer5_porosity, v.layer6_porosity};
+  const double diameter[] = {v.layer1_mean_diameter, v.layer2_mean_diameter,
+                             v.layer3_mean_diameter, v.layer4_mean_diameter,
+                             v.layer5_mean_diameter, v.layer6_mean_diameter};
+  std::string p, d;
+  for (int l = 0; l < fabric::kProfileLayers; ++l)
+    p += fmt(" %.3f", porosity[l]), d += fmt(" %.2f", diameter[l]);
+  return "  by height (" + std::to_string(fabric::kProfileLayers) +
+         " equal layers, floor first, by volume): porosity" + p +
+         "; mass-weighted mean diameter / d_N" + d + "\n" +
+         "  mean local Cu / Cu (27 sub-cubes): " +
+         (std::isfinite(v.local_cu_ratio) ? fmt("%.3f", v.local_cu_ratio)
+                                          : std::string("none")) +
+         " (1: mixed; below 1: like sizes together)\n";
 }
 
 double FixSequentialPack::compute_vector(int i) { return vector_[i]; }

@@ -79,6 +79,7 @@ class FixSequentialPack : public Fix {
                            const fabric::PackingResult &);
   std::string summary_figures(const fabric::PackReport &,
                               const fabric::PackingResult &);
+  std::string profile_figures(const fabric::PackVector &);
   // Stops the run when the specimen's coarse grains have more neighbours
   // (within their radius + a neighbour's radius + the neighbor skin) than
   // LIGGGHTS' neighbour list holds per atom (neigh_modify one).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "psd.h"
@@ -23,10 +24,6 @@ std::string to_string(Start s) {
     case Start::automatic: return "auto";
   }
   return "?";
-}
-
-Start default_start(Arrangement a) {
-  return a == Arrangement::discrete ? Start::automatic : Start::floor;
 }
 
 std::string to_string(Placement p) {
@@ -73,6 +70,124 @@ struct Random {
     return Vec3(s * std::cos(phi), s * std::sin(phi), z);
   }
 };
+
+// Each deck is the list plus this many grains of each size (new_deck()).
+constexpr long long kDeckExtra = 2;
+// DA: how much faster than by number the coarsest size is drawn (x^2
+// between).
+constexpr double kCoarseBoost = 0.6;
+// LA: how strongly a size that falls behind its schedule is favoured:
+// e^(100 x) for a size x (as a share of its deck) behind.
+constexpr double kCatchUp = 100.0;
+
+// ---- The arrangement rules: the one place DA and LA differ. ----
+// Both place a drawn grain on the lowest site that fits it; a rule decides
+// which size is drawn next, which two face spheres a Fig. 8 grain touches
+// and where a specimen starts by default.
+
+// The sizes as a rule sees them, per rank (finest first): the list's count
+// and where the size lies between the finest and the coarsest, in ln r.
+struct Sizes {
+  std::vector<long long> count;
+  std::vector<double> volume;  // of one grain
+  std::vector<double> x;       // 0 the finest, 1 the coarsest
+};
+
+// The deck as the next draw finds it, per rank: grains left and the share
+// of the size's decks spent; t the solid volume placed so far as a share of
+// the list's. Ranks 0 .. n-1 may be drawn.
+struct DrawState {
+  const long long* left;
+  const double* spent;
+  int n;
+  double t;
+};
+
+class Rule {
+ public:
+  virtual ~Rule() = default;
+  virtual Start default_start() const = 0;
+  // Fig. 8: the grain touches the two smaller face spheres, else the two
+  // larger.
+  virtual bool touches_smaller_pair() const = 0;
+  // The weight w[i] >= 0 of each rank i < st.n in the draw; all 0 when
+  // none of these sizes is left in the deck.
+  virtual void weigh(const DrawState& st, double* w) const = 0;
+};
+
+// DA: by number, the coarse sizes up to 60 % faster, so a deck's coarse
+// grains are placed before the container is nearly full, where they would
+// find no room.
+class Discrete : public Rule {
+ public:
+  explicit Discrete(const Sizes& sizes) {
+    for (double x : sizes.x) boost_.push_back(1.0 + kCoarseBoost * x * x);
+  }
+  Start default_start() const override { return Start::automatic; }
+  bool touches_smaller_pair() const override { return false; }
+  void weigh(const DrawState& st, double* w) const override {
+    for (int i = 0; i < st.n; ++i)
+      w[i] = static_cast<double>(st.left[i]) * boost_[i];
+  }
+
+ private:
+  std::vector<double> boost_;
+};
+
+// LA, a graded bed: the draw follows the list from the coarsest size to the
+// finest. The list ordered coarse first gives each size a share [b, e] of
+// its solid volume; at t the size is drawn with weight (left in the deck)
+// * exp(-(t - (b + e) / 2)^2 / (2 w^2)), w = spec.layering, and a size that
+// falls behind its schedule (by t it should have spent min(1, (t - b) /
+// (e - b)) of its deck) is favoured by kCatchUp, so no size is starved.
+class GradedBed : public Rule {
+ public:
+  GradedBed(const Sizes& sizes, double width) : width_(width) {
+    if (!(width > 0.0 && std::isfinite(width)))
+      throw std::invalid_argument("layering must be positive and finite, got " +
+                                  std::to_string(width));
+    const int n = static_cast<int>(sizes.count.size());
+    double total = 0.0;
+    for (int i = 0; i < n; ++i) total += sizes.count[i] * sizes.volume[i];
+    begin_.assign(n, 0.0), end_.assign(n, 0.0);
+    double done = 0.0;
+    for (int i = n - 1; i >= 0; --i) {
+      begin_[i] = done / total;
+      done += sizes.count[i] * sizes.volume[i];
+      end_[i] = done / total;
+    }
+  }
+  Start default_start() const override { return Start::floor; }
+  bool touches_smaller_pair() const override { return true; }
+  void weigh(const DrawState& st, double* w) const override {
+    double top = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < st.n; ++i) {
+      w[i] = -std::numeric_limits<double>::infinity();  // ln of the weight
+      if (st.left[i] <= 0) continue;
+      double d = (st.t - 0.5 * (begin_[i] + end_[i])) / width_;
+      double due = end_[i] > begin_[i]
+          ? std::clamp((st.t - begin_[i]) / (end_[i] - begin_[i]), 0.0, 1.0)
+          : 1.0;
+      double behind = std::max(0.0, due - st.spent[i]);
+      w[i] = std::log(static_cast<double>(st.left[i])) - 0.5 * d * d +
+             kCatchUp * behind;
+      top = std::max(top, w[i]);
+    }
+    for (int i = 0; i < st.n; ++i)
+      w[i] = st.left[i] > 0 ? std::exp(w[i] - top) : 0.0;
+  }
+
+ private:
+  double width_;
+  std::vector<double> begin_, end_;  // per rank, shares of the list's volume
+};
+
+std::unique_ptr<Rule> make_rule(Arrangement a, const Sizes& sizes,
+                                double layering) {
+  if (a == Arrangement::layerwise)
+    return std::make_unique<GradedBed>(sizes, layering);
+  return std::make_unique<Discrete>(sizes);
+}
 
 // A support of a site: a placed sphere (index >= 0) or a wall (< 0): wall
 // -1 - (2 axis + side), side 0 the low wall of that axis, 1 the high one.
@@ -146,14 +261,87 @@ Site heap_pop(std::vector<Site>& h) {
   return top;
 }
 
-constexpr long long kDeckExtra = 2;
-// How much faster than by number the coarsest size is drawn (x^2 between).
-constexpr double kCoarseBoost = 0.6;
-// LA: how strongly a size that falls behind the deck is favoured: e^(100 x)
-// for a size x (as a share of its deck) behind the deck as a whole.
-constexpr double kCatchUp = 100.0;
 // The vacancy choice of a coarse class: candidates weighed per vacancy.
 constexpr int kVacancyCandidates = 24;
+
+// The cells of the vacancy choice (about a coarsest diameter each) and the
+// share of each placed sphere's volume in each cell it meets: a sphere wider
+// than an eighth of a cell is split over the cells it meets by a lattice
+// quadrature; a smaller one counts in the cell of its centre.
+struct CellShares {
+  int n[3];
+  Vec3 lo, cell_size;
+  int cells = 0;
+  double split_radius = 0.0;
+  std::vector<std::uint32_t> begin;          // per sphere, into part
+  std::vector<std::pair<int, double>> part;  // (cell, share of the volume)
+  int cell_at(const Vec3& q) const {
+    int idx[3];
+    for (int a = 0; a < 3; ++a)
+      idx[a] = std::clamp(static_cast<int>((q[a] - lo[a]) / cell_size[a]), 0,
+                          n[a] - 1);
+    return (idx[2] * n[1] + idx[1]) * n[0] + idx[0];
+  }
+  int home(int i) const { return part[begin[i]].first; }
+};
+
+// Quadrature points of the unit ball: the centres of an 8^3 lattice on
+// [-1, 1]^3 that lie inside it.
+const std::vector<Vec3>& unit_ball_points() {
+  static const std::vector<Vec3> ball = [] {
+    std::vector<Vec3> p;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j)
+        for (int k = 0; k < 8; ++k) {
+          Vec3 q((i + 0.5) / 4.0 - 1.0, (j + 0.5) / 4.0 - 1.0,
+                 (k + 0.5) / 4.0 - 1.0);
+          if (q.squaredNorm() <= 1.0) p.push_back(q);
+        }
+    return p;
+  }();
+  return ball;
+}
+
+CellShares split_over_cells(const SphereGrid& grid, const Vec3& lo,
+                            const Vec3& hi, double dmax) {
+  CellShares cs;
+  cs.lo = lo;
+  const Vec3 ext = hi - lo;
+  for (int a = 0; a < 3; ++a) {
+    cs.n[a] = std::max(1, static_cast<int>(std::lround(ext[a] / dmax)));
+    cs.cell_size[a] = ext[a] / cs.n[a];
+  }
+  cs.cells = cs.n[0] * cs.n[1] * cs.n[2];
+  cs.split_radius = 0.125 * cs.cell_size.minCoeff();
+  const std::vector<Vec3>& ball = unit_ball_points();
+  std::vector<int> count_in(cs.cells), touched;
+  cs.begin.assign(grid.size() + 1, 0);
+  for (int i = 0; i < grid.size(); ++i) {
+    cs.begin[i] = static_cast<std::uint32_t>(cs.part.size());
+    const Vec3 c = grid.centre(i);
+    const double r = grid.radius(i);
+    bool within = true;  // does the sphere lie in the cell of its centre?
+    for (int a = 0; a < 3 && within; ++a) {
+      double cl = lo[a] + std::floor((c[a] - lo[a]) / cs.cell_size[a]) *
+                              cs.cell_size[a];
+      within = c[a] - r >= cl && c[a] + r <= cl + cs.cell_size[a];
+    }
+    if (within || r < cs.split_radius) {
+      cs.part.push_back({cs.cell_at(c), 1.0});
+      continue;
+    }
+    std::fill(count_in.begin(), count_in.end(), 0);
+    touched.clear();
+    for (const Vec3& q : ball) {
+      int cq = cs.cell_at(c + r * q);
+      if (count_in[cq]++ == 0) touched.push_back(cq);
+    }
+    for (int cq : touched)
+      cs.part.push_back({cq, static_cast<double>(count_in[cq]) / ball.size()});
+  }
+  cs.begin[grid.size()] = static_cast<std::uint32_t>(cs.part.size());
+  return cs;
+}
 
 class Packer {
  public:
@@ -188,13 +376,17 @@ class Packer {
     std::uint32_t order;
   };
   std::vector<Front> front_;  // per level: key and order of its heap's top
-  int choose_grain(const Site& s, int level);
   int take_from_deck(const double* w, int n, double total);
-  int draw_by_number();
+  int draw();
   int place(const Vec3& c, int k, Placement how);
   bool try_site(Site& s, int k, const Geometry& g);
   void first_face();
   void choose_vacancies();
+  void make_vacant(int i);
+  void remove_coarse(std::vector<int>& v, long long removals, int k);
+  void remove_fines(const std::vector<int>& v, long long removals);
+  CellShares cells_;          // the vacancy choice's cells
+  std::vector<double> lose_;  // per cell: solid volume it still has to lose
   void second_loop();
   void fill_vacancy(int hole, int k);
   void report_progress();
@@ -205,18 +397,16 @@ class Packer {
   std::vector<int> asc_;    // classes by radius, finest first
   std::vector<int> rank_;   // class -> its position in asc_
   std::vector<int> below_;  // rank -> largest rank of a smaller radius, or -1
-  std::vector<double> log_radius_, volume_;
+  std::vector<double> volume_;
+  std::unique_ptr<Rule> rule_;  // DA or LA: which size is drawn next
   std::vector<std::vector<Site>> heap_;  // per rank: sites for sizes <= it
   // The grains come from decks, each deck the particle list once, shuffled
   // by drawing without replacement; the next deck opens when one is spent.
   std::vector<long long> deck_, deck_size_;
   long long deck_total_ = 0;
-  // Per rank: how much faster than by number a size is drawn. The coarsest
-  // are drawn up to 30 % faster, so a deck's coarse grains are placed before
-  // the container is nearly full, where they would find no room.
-  std::vector<double> boost_;
+  double placed_volume_ = 0.0, list_volume_ = 0.0;
 
-  // DA: no open site takes a size of this rank or above (until a site opens
+  // No open site takes a size of this rank or above (until a site opens
   // for one); such grains are not drawn, they stay in the deck.
   int blocked_ = 0;
   void new_deck();
@@ -233,6 +423,38 @@ class Packer {
   PackingResult res_;
 };
 
+// The number of spheres of a usable spec; throws std::invalid_argument
+// naming what is wrong otherwise.
+long long checked_total(const PackingSpec& spec) {
+  if (spec.radius.empty() || spec.radius.size() != spec.count.size())
+    throw std::invalid_argument("packing needs one count per size class");
+  long long total = 0;
+  double rmax = 0.0;
+  for (std::size_t k = 0; k < spec.radius.size(); ++k) {
+    if (!(spec.radius[k] > 0.0) || !std::isfinite(spec.radius[k]))
+      throw std::invalid_argument("sphere radius must be positive and finite");
+    if (spec.count[k] < 0)
+      throw std::invalid_argument("sphere count must not be negative");
+    total += spec.count[k];
+    if (spec.count[k] > 0) rmax = std::max(rmax, spec.radius[k]);
+  }
+  for (int a = 0; a < 3; ++a)
+    if (!(spec.hi[a] > spec.lo[a]))
+      throw std::invalid_argument("container must have positive extent");
+  if (total < 3)
+    throw std::invalid_argument("packing needs at least 3 spheres, got " +
+                                std::to_string(total));
+  if (total > INT32_MAX / 4)
+    throw std::invalid_argument("packing supports at most " +
+                                std::to_string(INT32_MAX / 4) + " spheres");
+  for (int a = 0; a < 3; ++a)
+    if (spec.hi[a] - spec.lo[a] < 2.0 * rmax)
+      throw std::invalid_argument(
+          "container is narrower than the largest sphere (diameter " +
+          std::to_string(2.0 * rmax) + ")");
+  return total;
+}
+
 Packer::Packer(const PackingSpec& spec)
     : spec_(spec),
       grid_(spec.lo, spec.hi, spec.radius,
@@ -243,25 +465,8 @@ Packer::Packer(const PackingSpec& spec)
             }())),
       rng_{spec.seed ^ 0x5eedULL},
       vacancy_rng_{spec.seed ^ 0x7ac4ULL} {
-  if (spec.radius.empty() || spec.radius.size() != spec.count.size())
-    throw std::invalid_argument("packing needs one count per size class");
+  total_ = checked_total(spec);
   nclass_ = static_cast<int>(spec.radius.size());
-  for (int k = 0; k < nclass_; ++k) {
-    if (!(spec.radius[k] > 0.0) || !std::isfinite(spec.radius[k]))
-      throw std::invalid_argument("sphere radius must be positive and finite");
-    if (spec.count[k] < 0)
-      throw std::invalid_argument("sphere count must not be negative");
-    total_ += spec.count[k];
-  }
-  for (int a = 0; a < 3; ++a)
-    if (!(spec.hi[a] > spec.lo[a]))
-      throw std::invalid_argument("container must have positive extent");
-  if (total_ < 3)
-    throw std::invalid_argument("packing needs at least 3 spheres, got " +
-                                std::to_string(total_));
-  if (total_ > INT32_MAX / 4)
-    throw std::invalid_argument("packing supports at most " +
-                                std::to_string(INT32_MAX / 4) + " spheres");
   centre_ = 0.5 * (spec.lo + spec.hi);
   asc_.resize(nclass_);
   for (int k = 0; k < nclass_; ++k) asc_[k] = k;
@@ -280,29 +485,29 @@ Packer::Packer(const PackingSpec& spec)
   double rmax = 0.0;
   for (int k = 0; k < nclass_; ++k) {
     double r = spec.radius[k];
-    log_radius_.push_back(std::log(r));
     volume_.push_back(sphere_volume(2.0 * r));
     if (spec.count[k] > 0) rmin = std::min(rmin, r), rmax = std::max(rmax, r);
   }
-  for (int a = 0; a < 3; ++a)
-    if (spec.hi[a] - spec.lo[a] < 2.0 * rmax)
-      throw std::invalid_argument(
-          "container is narrower than the largest sphere (diameter " +
-          std::to_string(2.0 * rmax) + ")");
   // Supports of a site lie within a finest diameter of each other: every
   // pocket a grain can sit in, and few enough triples to stay fast.
   gap_ = 2.0 * rmin;
   heap_.resize(nclass_);
   front_.assign(nclass_, Front{std::numeric_limits<double>::infinity(),
                                std::numeric_limits<std::uint32_t>::max()});
-  // x: where a size lies between the finest and the coarsest, in ln(r).
+  // The sizes by rank, for the rule; x: where a size lies between the
+  // finest and the coarsest, in ln(r).
+  Sizes sizes;
   const double span = std::log(rmax / rmin);
   for (int i = 0; i < nclass_; ++i) {
-    double x = span > 0.0
-        ? std::clamp(std::log(spec.radius[asc_[i]] / rmin) / span, 0.0, 1.0)
-        : 0.0;
-    boost_.push_back(1.0 + kCoarseBoost * x * x);
+    const int k = asc_[i];
+    sizes.count.push_back(spec.count[k]);
+    sizes.volume.push_back(volume_[k]);
+    sizes.x.push_back(span > 0.0
+        ? std::clamp(std::log(spec.radius[k] / rmin) / span, 0.0, 1.0)
+        : 0.0);
+    list_volume_ += spec.count[k] * volume_[k];
   }
+  rule_ = make_rule(spec.arrangement, sizes, spec.layering);
   res_.placed_per_class.assign(nclass_, 0);
   missing_.assign(nclass_, 0);
   deck_.assign(nclass_, 0);
@@ -382,7 +587,7 @@ std::optional<Vec3> Packer::position(const Site& s, const Geometry& g,
         std::sort(f, f + 3, [](const Sphere& x, const Sphere& y) {
           return x.radius > y.radius;
         });
-        if (spec_.arrangement == Arrangement::layerwise) std::swap(f[0], f[2]);
+        if (rule_->touches_smaller_pair()) std::swap(f[0], f[2]);
         c = touch_two_in_plane(f[0], f[1], f[2].centre, r);
         how = Placement::touch_two;
       }
@@ -517,57 +722,27 @@ void Packer::new_deck() {
   }
 }
 
-// DA: the next grain, drawn by number from the deck among the sizes some
-// open site may take (-1: none).
-int Packer::draw_by_number() {
-  double w[100];
+// The next grain, drawn by the rule from the deck among the sizes some open
+// site may take (-1: none).
+int Packer::draw() {
+  long long left[100];
+  double spent[100], w[100];
   for (int pass = 0; pass < 2; ++pass) {
-    double total = 0.0;
     for (int i = 0; i < blocked_; ++i) {
-      int k = asc_[i];
-      w[i] = static_cast<double>(deck_[k]) * boost_[i];
-      total += w[i];
+      const int k = asc_[i];
+      left[i] = deck_[k];
+      spent[i] = deck_size_[k] > 0
+          ? static_cast<double>(deck_size_[k] - deck_[k]) / deck_size_[k]
+          : 1.0;
     }
+    rule_->weigh(DrawState{left, spent, blocked_, placed_volume_ / list_volume_},
+                 w);
+    double total = 0.0;
+    for (int i = 0; i < blocked_; ++i) total += w[i];
     if (total > 0.0) return take_from_deck(w, blocked_, total);
     new_deck();  // this one holds no size that fits: the next deck opens
   }
   return -1;
-}
-
-// LA: the grain a site is offered, drawn by number from the deck among the
-// sizes it may take, weighted towards the sizes of the spheres it touches
-// ("similar radii have priority"): exp(-(ln r - ln r_site)^2 / (2 w^2)),
-// w = spec.layering; -1 when the deck holds none of those sizes.
-int Packer::choose_grain(const Site& s, int level) {
-  if (deck_total_ == 0) new_deck();
-  double log_site = 0.0;
-  int spheres = 0;
-  for (int j = 0; j < 3; ++j)
-    if (!is_wall(s.s[j])) log_site += std::log(grid_.radius(s.s[j])), ++spheres;
-  if (spheres > 0) log_site /= spheres;
-  const double inv = 1.0 / (2.0 * spec_.layering * spec_.layering);
-  // A size that falls behind the deck as a whole is offered more, so the
-  // preference for like sizes never starves a size (the coarsest above all).
-  double spent = 0.0, size = 0.0;
-  for (int k = 0; k < nclass_; ++k)
-    spent += static_cast<double>(deck_size_[k] - deck_[k]), size += deck_size_[k];
-  spent /= size;
-  double w[100], total = 0.0;
-  for (int i = 0; i <= level; ++i) {
-    int k = asc_[i];
-    double d = log_radius_[k] - log_site;
-    // On schedule, a size has spent the deck's share times its boost: the
-    // coarsest finish their deck early, before the container is nearly full.
-    double behind = deck_size_[k] > 0
-        ? std::min(1.0, spent * boost_[i]) -
-              static_cast<double>(deck_size_[k] - deck_[k]) / deck_size_[k]
-        : 0.0;
-    w[i] = static_cast<double>(deck_[k]) *
-           std::exp(kCatchUp * behind - (spheres > 0 ? d * d * inv : 0.0));
-    total += w[i];
-  }
-  if (!(total > 0.0)) return -1;
-  return take_from_deck(w, level + 1, total);
 }
 
 // Draws a rank with probability w[i] / total (i < n, total > 0) and takes a
@@ -587,6 +762,7 @@ int Packer::take_from_deck(const double* w, int n, double total) {
 
 int Packer::place(const Vec3& c, int k, Placement how) {
   int p = grid_.insert(c, k);
+  placed_volume_ += volume_[k];
   vacant_.push_back(0);
   how_.push_back(how);
   report_progress();
@@ -610,23 +786,18 @@ bool Packer::try_site(Site& s, int k, const Geometry& g) {
 }
 
 // Start centre (section 2.2): the largest sphere at the container centre and
-// two companions (LA the next largest, DA drawn by number) around it.
+// two companions drawn by the rule (LA's draw starts with the coarsest).
 void Packer::first_face() {
   Random rng{spec_.seed};
   int k[3];
-  for (int i = 0; i < 3; ++i) {
-    // The largest sphere first; LA the next largest, DA drawn by number.
-    if (i == 0 || spec_.arrangement == Arrangement::layerwise) {
-      if (deck_total_ == 0) new_deck();
-      int r = nclass_ - 1;
-      while (deck_[asc_[r]] == 0) --r;
-      k[i] = asc_[r];
-      --deck_[k[i]], --deck_total_;
-    } else {
-      blocked_ = nclass_;
-      k[i] = draw_by_number();
-    }
-  }
+  new_deck();
+  int largest = nclass_ - 1;
+  while (deck_[asc_[largest]] == 0) --largest;
+  k[0] = asc_[largest];
+  --deck_[k[0]], --deck_total_;
+  blocked_ = nclass_;
+  k[1] = draw();
+  k[2] = draw();
   double r0 = spec_.radius[k[0]], r1 = spec_.radius[k[1]],
          r2 = spec_.radius[k[2]];
   Vec3 c0 = centre_, c1;
@@ -653,172 +824,130 @@ void Packer::first_face() {
 
 // The packing holds the particle list with room to spare: per size class,
 // the list's count of its spheres are the specimen and the others are
-// vacancies, grain-sized holes. Which ones is chosen cell by cell (cells of
-// about a coarsest diameter) so that every cell is left as close to the
-// target porosity as its packing allows. A cell's solid volume counts each
-// sphere where it lies (a sphere wider than an eighth of a cell is split
-// over the cells it meets by a lattice quadrature; a smaller one counts in
-// the cell of its centre). Coarse classes go first: each vacancy is the best
-// of a few random spheres of its class, the one whose volume falls where the
-// cells still have most to lose; then the numerous fines, spread over the
-// cells in proportion to what each still has to lose, even out the rest.
+// vacancies, grain-sized holes. Which ones is chosen cell by cell so that
+// every cell is left as close to the target porosity as its packing allows
+// (CellShares says where each sphere's volume lies). Coarse classes go
+// first (remove_coarse), then the numerous fines even out the rest
+// (remove_fines).
 void Packer::choose_vacancies() {
-  const double dmax = 2.0 * spec_.radius[asc_.back()];
-  int n[3];
-  Vec3 ext = spec_.hi - spec_.lo, cell_size;
-  for (int a = 0; a < 3; ++a) {
-    n[a] = std::max(1, static_cast<int>(std::lround(ext[a] / dmax)));
-    cell_size[a] = ext[a] / n[a];
-  }
-  auto cell_at = [&](const Vec3& q) {
-    int idx[3];
-    for (int a = 0; a < 3; ++a)
-      idx[a] = std::clamp(static_cast<int>((q[a] - spec_.lo[a]) / cell_size[a]),
-                          0, n[a] - 1);
-    return (idx[2] * n[1] + idx[1]) * n[0] + idx[0];
-  };
-  // Quadrature points of the unit ball: the centres of an 8^3 lattice on
-  // [-1, 1]^3 that lie inside it.
-  static const std::vector<Vec3> ball = [] {
-    std::vector<Vec3> p;
-    for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j)
-        for (int k = 0; k < 8; ++k) {
-          Vec3 q((i + 0.5) / 4.0 - 1.0, (j + 0.5) / 4.0 - 1.0, (k + 0.5) / 4.0 - 1.0);
-          if (q.squaredNorm() <= 1.0) p.push_back(q);
-        }
-    return p;
-  }();
-  const double split_radius = 0.125 * cell_size.minCoeff();
-  const int cells = n[0] * n[1] * n[2];
-  // Per sphere: the cells it lies in and its share in each.
-  std::vector<std::uint32_t> part_begin(grid_.size() + 1, 0);
-  std::vector<std::pair<int, double>> parts;
-  std::vector<double> placed(cells, 0.0), lose(cells, 0.0);
+  cells_ = split_over_cells(grid_, spec_.lo, spec_.hi,
+                            2.0 * spec_.radius[asc_.back()]);
+  const CellShares& cs = cells_;
+  std::vector<double> placed(cs.cells, 0.0);
   double total_placed = 0.0, list_volume = 0.0;
-  std::vector<int> count_in(cells);
   for (int i = 0; i < grid_.size(); ++i) {
-    part_begin[i] = static_cast<std::uint32_t>(parts.size());
-    Vec3 c = grid_.centre(i);
-    double r = grid_.radius(i), v = volume_[grid_.sphere_class(i)];
+    const double v = volume_[grid_.sphere_class(i)];
     total_placed += v;
-    int home = cell_at(c);
-    bool within = true;  // does the sphere lie in the cell of its centre?
-    for (int a = 0; a < 3 && within; ++a) {
-      double lo = spec_.lo[a] + std::floor((c[a] - spec_.lo[a]) / cell_size[a]) * cell_size[a];
-      within = c[a] - r >= lo && c[a] + r <= lo + cell_size[a];
-    }
-    if (within || r < split_radius) {
-      parts.push_back({home, 1.0});
-    } else {
-      std::fill(count_in.begin(), count_in.end(), 0);
-      std::vector<int> touched;
-      for (const Vec3& q : ball) {
-        int cq = cell_at(c + r * q);
-        if (count_in[cq]++ == 0) touched.push_back(cq);
-      }
-      for (int cq : touched)
-        parts.push_back({cq, static_cast<double>(count_in[cq]) / ball.size()});
-    }
-    for (size_t j = part_begin[i]; j < parts.size(); ++j)
-      placed[parts[j].first] += v * parts[j].second;
+    for (std::uint32_t j = cs.begin[i]; j < cs.begin[i + 1]; ++j)
+      placed[cs.part[j].first] += v * cs.part[j].second;
   }
-  part_begin[grid_.size()] = static_cast<std::uint32_t>(parts.size());
   for (int k = 0; k < nclass_; ++k) list_volume += spec_.count[k] * volume_[k];
   // What each cell should lose: its excess over the target solid volume,
   // scaled so that the cells together lose what the packing holds too much.
-  const double cell_volume = ext.prod() / cells;
-  const double target = list_volume / ext.prod();
+  const double cell_volume = (spec_.hi - spec_.lo).prod() / cs.cells;
+  const double target = list_volume / (spec_.hi - spec_.lo).prod();
+  lose_.assign(cs.cells, 0.0);
   double excess = 0.0;
-  for (int c = 0; c < cells; ++c) {
-    lose[c] = std::max(0.0, placed[c] - target * cell_volume);
-    excess += lose[c];
+  for (int c = 0; c < cs.cells; ++c) {
+    lose_[c] = std::max(0.0, placed[c] - target * cell_volume);
+    excess += lose_[c];
   }
-  double scale = excess > 0.0 ? std::max(0.0, total_placed - list_volume) / excess : 0.0;
-  for (double& l : lose) l *= scale;
-  auto remove = [&](int i) {
-    vacant_[i] = 1;
-    double v = volume_[grid_.sphere_class(i)];
-    for (size_t j = part_begin[i]; j < part_begin[i + 1]; ++j)
-      lose[parts[j].first] -= v * parts[j].second;
-  };
+  const double scale =
+      excess > 0.0 ? std::max(0.0, total_placed - list_volume) / excess : 0.0;
+  for (double& l : lose_) l *= scale;
   std::vector<std::vector<int>> of_class(nclass_);
   for (int i = 0; i < grid_.size(); ++i)
     of_class[grid_.sphere_class(i)].push_back(i);
-  std::vector<std::vector<int>> in_cell(cells);
-  // Spheres per cell (by centre), to tell where a size is over-represented.
-  std::vector<double> all_in_cell(cells, 0.0);
-  for (int i = 0; i < grid_.size(); ++i) all_in_cell[parts[part_begin[i]].first] += 1.0;
   for (int rk = nclass_ - 1; rk >= 0; --rk) {
     const int k = asc_[rk];
     std::vector<int>& v = of_class[k];
-    long long keep = std::min<long long>(spec_.count[k], v.size());
+    const long long keep = std::min<long long>(spec_.count[k], v.size());
     missing_[k] = spec_.count[k] - keep;
-    long long removals = static_cast<long long>(v.size()) - keep;
+    const long long removals = static_cast<long long>(v.size()) - keep;
     if (removals == 0) continue;
-    if (spec_.radius[k] >= split_radius) {
-      // Coarse: the best of a few random candidates, one vacancy at a time.
-      for (long long t = 0; t < removals; ++t) {
-        size_t left = v.size() - t, best = 0;
-        double best_score = -std::numeric_limits<double>::infinity();
-        for (int trial = 0; trial < kVacancyCandidates; ++trial) {
-          size_t j = t + std::min(left - 1, static_cast<size_t>(vacancy_rng_.uniform() * left));
-          int i = v[j];
-          // How much the removal brings the cells' losses towards zero
-          // (the drop of their sum of squares): an overshoot counts against.
-          double score = 0.0, vol = volume_[k];
-          for (size_t q = part_begin[i]; q < part_begin[i + 1]; ++q) {
-            double d = vol * parts[q].second;
-            score += d * (2.0 * lose[parts[q].first] - d);
-          }
-          if (score > best_score) best_score = score, best = j;
-        }
-        std::swap(v[t], v[best]);
-        remove(v[t]);
-      }
-      continue;
-    }
-    // Fines: removals per cell by systematic sampling of what each cell
-    // still has to lose, then spheres drawn at random within the cell.
-    for (auto& l : in_cell) l.clear();
-    for (int i : v) in_cell[parts[part_begin[i]].first].push_back(i);
-    double weight_total = 0.0;
-    std::vector<double> w(cells, 0.0);
-    for (int c = 0; c < cells; ++c) {
-      // A cell loses this size in proportion to what it has to lose and to
-      // how over-represented the size is in it: fines that crowd along the
-      // walls go first there, and the local PSD follows the global one.
-      double share = in_cell[c].size() / all_in_cell[c];
-      double global = static_cast<double>(v.size()) / grid_.size();
-      w[c] = in_cell[c].empty()
-                 ? 0.0
-                 : std::max(lose[c], 0.0) * std::pow(share / global, 3.0) + 1e-300;
-      weight_total += w[c];
-    }
-    double step = weight_total / static_cast<double>(removals);
-    double next = vacancy_rng_.uniform() * step, cum = 0.0;
-    long long planned = 0;
-    std::vector<long long> quota(cells, 0);
-    for (int c = 0; c < cells && planned < removals; ++c) {
-      cum += w[c];
-      while (next < cum && planned < removals) ++quota[c], ++planned, next += step;
-    }
-    // A cell asked for more of this size than it holds passes the rest on.
-    long long carry = removals - planned;
-    for (int pass = 0; pass < 2; ++pass)
-      for (int c = 0; c < cells; ++c) {
-        std::vector<int>& l = in_cell[c];
-        long long q = (pass == 0 ? quota[c] : 0) + carry;
-        long long taken = 0;
-        for (size_t t = 0; t < l.size() && taken < q; ++t) {
-          size_t j = t + std::min(l.size() - t - 1,
-                                  static_cast<size_t>(vacancy_rng_.uniform() * (l.size() - t)));
-          std::swap(l[t], l[j]);
-          if (!vacant_[l[t]]) remove(l[t]), ++taken;
-        }
-        carry = q - taken;
-      }
+    if (spec_.radius[k] >= cs.split_radius)
+      remove_coarse(v, removals, k);
+    else
+      remove_fines(v, removals);
   }
+}
+
+// Sphere i becomes a vacancy: its cells have that much less to lose.
+void Packer::make_vacant(int i) {
+  vacant_[i] = 1;
+  const double v = volume_[grid_.sphere_class(i)];
+  for (std::uint32_t j = cells_.begin[i]; j < cells_.begin[i + 1]; ++j)
+    lose_[cells_.part[j].first] -= v * cells_.part[j].second;
+}
+
+// A coarse class (spheres of class k in v): each vacancy is the best of a
+// few random spheres of it, the one whose removal brings the cells' losses
+// closest to zero (the drop of their sum of squares; an overshoot counts
+// against).
+void Packer::remove_coarse(std::vector<int>& v, long long removals, int k) {
+  for (long long t = 0; t < removals; ++t) {
+    const size_t left = v.size() - t;
+    size_t best = 0;
+    double best_score = -std::numeric_limits<double>::infinity();
+    for (int trial = 0; trial < kVacancyCandidates; ++trial) {
+      size_t j = t + std::min(left - 1,
+                              static_cast<size_t>(vacancy_rng_.uniform() * left));
+      const int i = v[j];
+      double score = 0.0;
+      for (std::uint32_t q = cells_.begin[i]; q < cells_.begin[i + 1]; ++q) {
+        double d = volume_[k] * cells_.part[q].second;
+        score += d * (2.0 * lose_[cells_.part[q].first] - d);
+      }
+      if (score > best_score) best_score = score, best = j;
+    }
+    std::swap(v[t], v[best]);
+    make_vacant(v[t]);
+  }
+}
+
+// A fine class (spheres in v): removals per cell by systematic sampling of
+// what each cell still has to lose, weighted by how over-represented the
+// size is in the cell (fines that crowd along the walls go first there, and
+// the local PSD follows the global one), then spheres drawn at random
+// within the cell; a cell asked for more than it holds passes the rest on.
+void Packer::remove_fines(const std::vector<int>& v, long long removals) {
+  const CellShares& cs = cells_;
+  std::vector<std::vector<int>> in_cell(cs.cells);
+  std::vector<double> all_in_cell(cs.cells, 0.0), w(cs.cells, 0.0);
+  for (int i = 0; i < grid_.size(); ++i) all_in_cell[cs.home(i)] += 1.0;
+  for (int i : v) in_cell[cs.home(i)].push_back(i);
+  const double global = static_cast<double>(v.size()) / grid_.size();
+  double weight_total = 0.0;
+  for (int c = 0; c < cs.cells; ++c) {
+    const double share = in_cell[c].size() / all_in_cell[c];
+    w[c] = in_cell[c].empty()
+               ? 0.0
+               : std::max(lose_[c], 0.0) * std::pow(share / global, 3.0) + 1e-300;
+    weight_total += w[c];
+  }
+  const double step = weight_total / static_cast<double>(removals);
+  double next = vacancy_rng_.uniform() * step, cum = 0.0;
+  long long planned = 0;
+  std::vector<long long> quota(cs.cells, 0);
+  for (int c = 0; c < cs.cells && planned < removals; ++c) {
+    cum += w[c];
+    while (next < cum && planned < removals) ++quota[c], ++planned, next += step;
+  }
+  long long carry = removals - planned;
+  for (int pass = 0; pass < 2; ++pass)
+    for (int c = 0; c < cs.cells; ++c) {
+      std::vector<int>& l = in_cell[c];
+      const long long q = (pass == 0 ? quota[c] : 0) + carry;
+      long long taken = 0;
+      for (size_t t = 0; t < l.size() && taken < q; ++t) {
+        size_t j = t + std::min(l.size() - t - 1,
+                                static_cast<size_t>(vacancy_rng_.uniform() *
+                                                    (l.size() - t)));
+        std::swap(l[t], l[j]);
+        if (!vacant_[l[t]]) make_vacant(l[t]), ++taken;
+      }
+      carry = q - taken;
+    }
 }
 
 // The second loop: a class the packing holds too few of (the target is
@@ -910,28 +1039,11 @@ PackingResult Packer::run() {
   // site that fits it, so no size is replaced by smaller ones on the spot.
   int pending = -1;
   for (;;) {
-    Site s;
-    int level, k;
-    if (pending < 0 && spec_.arrangement == Arrangement::layerwise) {
-      // LA: the lowest site draws its grain among the sizes like its own.
-      if (!pop_lowest(0, s, level)) break;  // the container is full
-      k = choose_grain(s, level);
-      if (k < 0) {
-        new_deck();  // this deck has spent every size the site may take
-        k = choose_grain(s, level);
-      }
-      Geometry g = geometry(s);
-      if (!try_site(s, k, g)) {
-        demote(s, k, g);
-        pending = k;
-      }
-      continue;
-    }
-    // DA (and an LA grain that did not fit): the grain drawn takes the
-    // lowest site that fits it.
-    if (pending < 0) pending = draw_by_number();
+    if (pending < 0) pending = draw();
     if (pending < 0) break;  // no open site at all: the container is full
-    k = pending;
+    const int k = pending;
+    Site s;
+    int level;
     if (!pop_lowest(rank_[k], s, level)) {
       // No open site takes this size: it goes back into the deck, and this
       // size and larger ones wait until a site opens for them.
@@ -978,6 +1090,10 @@ PackingResult Packer::run() {
 }
 
 }  // namespace
+
+Start default_start(Arrangement a) {
+  return make_rule(a, Sizes{}, kDefaultLayering)->default_start();
+}
 
 namespace {
 double unplaced_volume(const PackingResult& r, const PackingSpec& spec) {

@@ -1,6 +1,8 @@
 // The sequential packer (paper, sections 2.2-2.3, Fig. 4), built so that a
-// specimen reaches its target porosity uniformly, from the floor (or the
-// centre) to the walls, with every grain of the PSD placed.
+// specimen reaches its target porosity with every grain of the PSD placed:
+// a discrete one uniformly, from the floor (or the centre) to the walls, a
+// layer-wise one layered by height, its porosity following the local
+// grading.
 //
 // Plain C++, no LIGGGHTS include. A grain is placed on a *site*: a triple of
 // supports that it touches, each support a sphere already placed or a
@@ -24,20 +26,29 @@
 // grain, so fines fill the pockets the coarse grains leave. Grains come in a
 // random sequence drawn by number from decks (the particle list, shuffled);
 // a drawn grain waits for the next site that fits it, so coarse grains are
-// not replaced by fines on the spot. The arrangement rule decides which grain
-// goes where (the one place the two rules differ):
-//   discrete  (DA): a drawn grain takes the lowest (nearest) site that fits
-//                   it: fines end up between coarse grains, a homogeneous
-//                   mixture;
-//   layerwise (LA): the lowest site draws its grain, weighted towards the
-//                   sizes of the spheres it touches ("similar radii have
-//                   priority", choose_grain()), so like sizes grow together.
+// not replaced by fines on the spot. Both arrangement rules place a drawn
+// grain on the lowest (nearest) site that fits it; they differ in the draw
+// (and in which face spheres a Fig. 8 grain touches, and the default
+// start), all in the Rule classes of front_packer.cpp, the one place:
+//   discrete  (DA): sizes drawn by number, in random order: fines end up
+//                   between coarse grains, a homogeneous mixture;
+//   layerwise (LA): a graded bed, the sediment of a soil dumped from a
+//                   truck: the draw follows the particle list from the
+//                   coarsest to the finest ("the larger and heavier
+//                   particles are dropped down first ... the fine particles
+//                   take more time to settle down", the paper's step 7 "by
+//                   descending order of size"), so like sizes lie together
+//                   and the local grading is narrower than the global one.
+//                   With one front from the floor the specimen is layered
+//                   by height: coarse at the floor, fine under the lid.
 // The container is packed full, denser than most targets. Per size class,
 // the list's count of the spheres placed are the specimen; the others are
 // vacancies, grain-sized holes chosen cell by cell so that every part of the
-// container is left at the target porosity. A class that the full packing
-// holds too few of has its missing grains put into vacancies of their size
-// or the next larger (the second loop).
+// container is left as close to the target porosity as its packing allows
+// (a layer-wise specimen's fine top packs looser than the target even
+// full, and its coarse floor is left denser to make up for it). A class
+// that the full packing holds too few of has its missing grains put into
+// vacancies of their size or the next larger (the second loop).
 #ifndef FABRIC_FRONT_PACKER_H
 #define FABRIC_FRONT_PACKER_H
 
@@ -70,8 +81,8 @@ std::string to_string(Arrangement a);
 enum class Start { floor, centre, floor_ceiling, automatic };
 std::string to_string(Start s);
 // The default start of a rule, from the measured specimens
-// (docs/fix_sequential_pack.md): DA automatic, LA floor (LA's first layer on
-// a wall is fine and loose, and two fronts make two of them).
+// (docs/fix_sequential_pack.md): DA automatic, LA floor (a graded bed is
+// one sediment, from the floor up).
 Start default_start(Arrangement a);
 
 // How a sphere came to its place.
@@ -88,6 +99,10 @@ enum class Placement : uint8_t {
 constexpr int kPlacementKinds = 8;
 std::string to_string(Placement p);
 
+// The default width of LA's draw schedule (PackingSpec::layering); see
+// results/layerwise/README.md for what it gives on the shipped soils.
+constexpr double kDefaultLayering = 0.025;
+
 struct PackingSpec {
   Vec3 lo, hi;                      // the container, an axis-aligned box
   std::vector<double> radius;       // per size class
@@ -97,9 +112,13 @@ struct PackingSpec {
   std::uint64_t seed = 1;
   // The second loop: missing grains go into vacancies.
   bool fill_pores = true;
-  // LA: width of the size preference in ln(radius): a site is offered size
-  // k with weight (left in the deck) * exp(-(ln r_k - ln r_site)^2 / (2 w^2)).
-  double layering = 0.25;
+  // LA: how sharply the draw follows the list from coarse to fine, as a
+  // share of the list's solid volume: with t the solid volume placed so far
+  // (as a share of the list's) and t_k the middle of size k's share in the
+  // list ordered coarse first, size k is drawn with weight (left in the
+  // deck) * exp(-(t - t_k)^2 / (2 w^2)). Smaller: sharper layers (each
+  // height holds a narrower grading); large (>= 1): nearly DA's mixture.
+  double layering = kDefaultLayering;
   double equilateral_tolerance = 0.1;  // Fig. 7, see nearly_equilateral()
   double overlap_tolerance = 1e-10;    // relative to the smaller radius
   // Called now and then with (placed, total) for progress output.

@@ -30,7 +30,20 @@
   X(9, held_mass_percent, "% of the mass in grains with min_contacts contacts or more before loading") \
   X(10, size_assortativity, "size assortativity (ln r) of the touching pairs; NaN without pairs") \
   X(11, radius_distance_spearman, "Spearman correlation of radius with distance from the container centre; NaN if undefined") \
-  X(12, interior_size_assortativity, "size assortativity of the touching pairs in the interior; NaN without such pairs")
+  X(12, interior_size_assortativity, "size assortativity of the touching pairs in the interior; NaN without such pairs") \
+  X(13, local_cu_ratio, "mean Cu of the 27 sub-cubes (grains by centre, sub-cubes of 50 grains or more) over the specimen's Cu: 1 mixed, below 1 like sizes together; NaN without such a sub-cube") \
+  X(14, layer1_porosity, "porosity of height layer 1 of 6 (equal slabs, floor first), by volume") \
+  X(15, layer2_porosity, "porosity of height layer 2 of 6, by volume")          \
+  X(16, layer3_porosity, "porosity of height layer 3 of 6, by volume")          \
+  X(17, layer4_porosity, "porosity of height layer 4 of 6, by volume")          \
+  X(18, layer5_porosity, "porosity of height layer 5 of 6, by volume")          \
+  X(19, layer6_porosity, "porosity of height layer 6 of 6 (under the ceiling), by volume") \
+  X(20, layer1_mean_diameter, "mass-weighted mean diameter of height layer 1 of 6 over the coarsest diameter d_N, by volume; NaN if it holds no solid") \
+  X(21, layer2_mean_diameter, "the same, height layer 2")                       \
+  X(22, layer3_mean_diameter, "the same, height layer 3")                       \
+  X(23, layer4_mean_diameter, "the same, height layer 4")                       \
+  X(24, layer5_mean_diameter, "the same, height layer 5")                       \
+  X(25, layer6_mean_diameter, "the same, height layer 6")
 
 namespace fabric {
 

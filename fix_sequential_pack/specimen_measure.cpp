@@ -455,6 +455,44 @@ double PackingMeasure::cu() const {
   return cu_of(ids);
 }
 
+double PackingMeasure::mean_local_cu_ratio(int n, int min_grains) const {
+  if (n < 1) throw std::invalid_argument("mean_local_cu_ratio: n < 1");
+  std::vector<std::vector<int>> in_cell(static_cast<std::size_t>(n) * n * n);
+  const Vec3 ext = box_.hi - box_.lo;
+  for (int i = 0; i < size(); ++i) {
+    int idx[3];
+    for (int a = 0; a < 3; ++a)
+      idx[a] = std::clamp(
+          static_cast<int>(std::floor((c_[i][a] - box_.lo[a]) / ext[a] * n)), 0,
+          n - 1);
+    in_cell[idx[0] + n * (idx[1] + n * idx[2])].push_back(i);
+  }
+  double sum = 0.0;
+  int cells = 0;
+  for (const std::vector<int>& ids : in_cell) {
+    if (static_cast<int>(ids.size()) < min_grains) continue;
+    const double c = cu_of(ids);
+    if (std::isfinite(c)) sum += c, ++cells;
+  }
+  return cells > 0 ? sum / cells / cu() : kNaN;
+}
+
+std::vector<RegionPorosity> PackingMeasure::layer_profile(int layers,
+                                                          int axis) const {
+  if (layers < 1 || axis < 0 || axis > 2)
+    throw std::invalid_argument(
+        "layer_profile: needs layers >= 1 and an axis 0, 1 or 2");
+  std::vector<RegionPorosity> out;
+  const double lo = box_.lo[axis], h = box_.hi[axis] - lo;
+  for (int l = 0; l < layers; ++l) {
+    Box slab = box_;
+    slab.lo[axis] = lo + h * l / layers;
+    slab.hi[axis] = l + 1 == layers ? box_.hi[axis] : lo + h * (l + 1) / layers;
+    out.push_back(measure(slab));
+  }
+  return out;
+}
+
 double PackingMeasure::worst_overlap() const {
   double worst = 0.0;
   for_each_pair(bins_, [&](int i, int j) {

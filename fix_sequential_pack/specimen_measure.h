@@ -26,6 +26,10 @@
 
 namespace fabric {
 
+// The layers of the profile by height that a specimen's summary reports
+// (PackingMeasure::layer_profile), floor first.
+constexpr int kProfileLayers = 6;
+
 // Volume of the part of the sphere (c, r) inside the box: closed form when
 // at most one face cuts the sphere, else the closed-form disc-rectangle area
 // integrated adaptively along the box's thinnest axis. Exact to about 1e-13
@@ -89,6 +93,19 @@ class PackingMeasure {
   // fewer than 2 spheres.
   double local_cu(const Box& region) const;
   double cu() const;
+  // Mean local grading over global: the container split n x n x n, the
+  // grains assigned to the sub-cube of their centre (half-open cells, the
+  // last closed), the mean of local_cu over the sub-cubes holding at least
+  // `min_grains` grains, over cu(). 1 for a mixture, below 1 where like
+  // sizes lie together. NaN if no sub-cube holds enough grains.
+  double mean_local_cu_ratio(int n = 3, int min_grains = 50) const;
+
+  // The container cut into `layers` slabs of equal thickness along `axis`
+  // (2: by height, floor first), each measured by volume (porosity and
+  // mass-weighted mean diameter from the exact sphere-slab volumes, never
+  // by centres). Throws std::invalid_argument unless layers >= 1 and
+  // 0 <= axis <= 2.
+  std::vector<RegionPorosity> layer_profile(int layers, int axis = 2) const;
 
   // Largest (ri + rj - |ci - cj|) / min(ri, rj) over all pairs; 0 if no
   // pair overlaps.

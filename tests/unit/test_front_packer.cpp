@@ -124,12 +124,16 @@ const std::string kData = TEST_DATA_DIR;
 }  // namespace
 
 // The paper's setting: porosity 0.35 in cubes of 6 coarsest diameters (5
-// for the broadest soils, to keep the suite short).
+// for the broadest soils, to keep the suite short). Discrete specimens: a
+// uniform mixture.
 struct Case {
   std::string psd;
   double porosity, side;
   Arrangement arrangement;
   double subcube_tol = 0.03, interior_tol = 0.01;  // the paper's specimens
+  // DA's automatic start: the start it is expected to take (automatic: not
+  // checked); floor means two fronts left grains that one front placed.
+  Start start = Start::automatic;
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
@@ -176,44 +180,135 @@ TEST_P(PackingInvariants, AllPlacedNoOverlapOnTargetUniformByVolume) {
   EXPECT_GT(lo, c.porosity - c.subcube_tol) << what;
   EXPECT_LT(hi, c.porosity + c.subcube_tol) << what;
   EXPECT_NEAR(interior, c.porosity, c.interior_tol) << what;
+  // A mixture, on the other side of the line a layer-wise specimen must
+  // cross (SpecimenLayerwise below): the interior's contacts pair sizes as
+  // a random packing does (bench/random_reference: -0.13 to -0.18), and
+  // every sub-cube holds the whole grading.
+  double assort_in = m.size_assortativity(m.interior(dmax));
+  double local = m.mean_local_cu_ratio(3);
+  std::printf("%s: interior assortativity %.3f, mean local Cu / Cu %.3f\n",
+              what.c_str(), assort_in, local);
+  EXPECT_LT(assort_in, 0.0) << what;
+  EXPECT_GT(local, 0.88) << what;
+  // DA's default start takes two fronts, and one front where two leave more
+  // of the list unplaced (the gap-graded soil loses coarse grains between
+  // two fronts and none with one).
+  if (c.start == Start::floor) {
+    std::printf("%s: two fronts leave %lld unplaced; auto took %s and leaves "
+                "%lld\n", what.c_str(), r.unplaced_with_two_fronts,
+                to_string(r.start).c_str(), r.unplaced());
+    EXPECT_EQ(r.start, Start::floor) << what;
+    EXPECT_GT(r.unplaced_with_two_fronts, 0) << what;
+    EXPECT_LT(r.unplaced(), r.unplaced_with_two_fronts) << what;
+  } else if (c.start == Start::floor_ceiling) {
+    EXPECT_EQ(r.start, Start::floor_ceiling) << what;
+    EXPECT_EQ(r.unplaced(), 0) << what;
+  }
 }
 
 // Cu 2.0 packs full at about 0.335, so at 0.35 it has little room to
 // spare: its wall layer stays looser than the target and its interior
-// denser (docs/fix_sequential_pack.md); LA packs looser than DA.
+// denser (docs/fix_sequential_pack.md).
 INSTANTIATE_TEST_SUITE_P(
-    ShippedSoils, PackingInvariants,
+    SpecimenShipped, PackingInvariants,
     ::testing::Values(
         Case{kPsd + "/cu2.0.txt", 0.35, 6, Arrangement::discrete, 0.03, 0.025},
-        Case{kPsd + "/cu2.5.txt", 0.35, 6, Arrangement::discrete},
+        Case{kPsd + "/cu2.5.txt", 0.35, 6, Arrangement::discrete, 0.03, 0.01,
+             Start::floor_ceiling},
         Case{kPsd + "/cu3.0.txt", 0.35, 6, Arrangement::discrete},
-        Case{kPsd + "/cu3.5.txt", 0.35, 6, Arrangement::discrete},
-        Case{kPsd + "/cu2.0.txt", 0.40, 6, Arrangement::layerwise, 0.04, 0.02},
-        Case{kPsd + "/cu2.5.txt", 0.36, 6, Arrangement::layerwise, 0.03, 0.015},
-        Case{kPsd + "/cu3.0.txt", 0.35, 6, Arrangement::layerwise},
-        Case{kPsd + "/cu3.5.txt", 0.35, 6, Arrangement::layerwise}),
+        Case{kPsd + "/cu3.5.txt", 0.35, 6, Arrangement::discrete}),
     case_name);
 
 // Soils the shipped ones do not resemble: a gap-graded soil (no grains
-// between 0.3 and 1.2 mm) and a broad one (Cu about 6, size ratio 25). In a
-// cube of 5 coarsest diameters a sub-cube is 1.7 of them wide, and one
-// coarse grain is 10 % of its volume: the sub-cubes scatter more. Broad DA,
-// seeds 1-3, measured by the independent checker: sub-cube sd 0.017-0.024,
-// widest deviation 0.039-0.053 with one front and 0.039-0.069 with two, so
-// 0.07 (about 3 sd).
+// between 0.3 and 1.2 mm, Cu 11.4) and a broad one (Cu 5.0, size ratio
+// 25). In a cube of 5 coarsest diameters a sub-cube is 1.7 of them wide,
+// and one coarse grain is 10 % of its volume: the sub-cubes scatter more.
+// Broad DA, seeds 1-3, measured by the independent checker: sub-cube sd
+// 0.017-0.024, widest deviation 0.039-0.053 with one front and 0.039-0.069
+// with two, so 0.07 (about 3 sd).
 INSTANTIATE_TEST_SUITE_P(
-    HostileSoils, PackingInvariants,
+    SpecimenHostile, PackingInvariants,
     ::testing::Values(
-        Case{kData + "/gap_graded.txt", 0.35, 5, Arrangement::discrete, 0.065, 0.015},
-        Case{kData + "/gap_graded.txt", 0.40, 5, Arrangement::layerwise, 0.07, 0.03},
-        Case{kData + "/broad_25.txt", 0.35, 5, Arrangement::discrete, 0.07, 0.015},
-        Case{kData + "/broad_25.txt", 0.35, 5, Arrangement::layerwise, 0.06, 0.015}),
+        Case{kData + "/gap_graded.txt", 0.35, 5, Arrangement::discrete, 0.065, 0.015,
+             Start::floor},
+        Case{kData + "/broad_25.txt", 0.35, 5, Arrangement::discrete, 0.07, 0.015}),
     case_name);
+
+// Layer-wise specimens are a graded bed (the draw follows the list from
+// coarse to fine, one front from the floor): layered inside, coarse at the
+// floor and fine under the lid, with every grain placed and the mean
+// porosity on target; the porosity varies with height (a narrow grading
+// packs loose), so the sub-cubes are not held to the target.
+struct LayeredCase {
+  std::string psd;
+  double side;
+  double min_interior_assortativity;  // today's LA: -0.10 to -0.19
+  double max_local_cu_ratio;          // today's LA: about 1.00
+};
+
+void PrintTo(const LayeredCase& c, std::ostream* os) {
+  *os << c.psd.substr(c.psd.find_last_of('/') + 1) << ", edge " << c.side
+      << " coarsest diameters";
+}
+
+std::string layered_name(const ::testing::TestParamInfo<LayeredCase>& info) {
+  std::string file = info.param.psd.substr(info.param.psd.find_last_of('/') + 1);
+  std::string name = file.substr(0, file.rfind('.'));
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+class LayeredSpecimen : public ::testing::TestWithParam<LayeredCase> {};
+
+TEST_P(LayeredSpecimen, PlacedOnTargetAndLayeredInside) {
+  const LayeredCase& c = GetParam();
+  Specimen s = make(c.psd, 0.35, c.side, Arrangement::layerwise);
+  const std::string what = c.psd + " layerwise";
+  const PackingResult& r = s.result;
+  long long listed = std::accumulate(s.spec.count.begin(), s.spec.count.end(), 0LL);
+  EXPECT_GE(r.placed(), 0.995 * listed) << what;
+  EXPECT_EQ(r.placed() + r.unplaced(), listed) << what;
+  expect_invariants(s, 0.35, true, what);  // shares within 1 pp, porosity 0.005
+  PackingMeasure m(r.centre, r.radius, Box{s.spec.lo, s.spec.hi});
+  const double dmax = 2.0 * s.spec.radius.back();
+  const double assort_in = m.size_assortativity(m.interior(dmax));
+  const double local = m.mean_local_cu_ratio(3);
+  auto prof = m.layer_profile(6);
+  std::printf("%s: placed %lld of %lld, interior assortativity "
+              "%.3f, mean local Cu / Cu %.3f\n  by height (porosity / mean "
+              "diameter over d_N):", what.c_str(), r.placed(), listed,
+              assort_in, local);
+  for (const RegionPorosity& l : prof)
+    std::printf(" %.3f/%.2f", l.porosity, l.mean_diameter / dmax);
+  std::printf("\n");
+  EXPECT_GE(assort_in, c.min_interior_assortativity) << what;
+  EXPECT_LE(local, c.max_local_cu_ratio) << what;
+  // A sediment: coarse at the floor, fine under the lid (today's LA grows
+  // its fine layer on the floor instead).
+  EXPECT_GT(prof.front().mean_diameter, 1.5 * prof.back().mean_diameter) << what;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SpecimenLayerwise, LayeredSpecimen,
+    ::testing::Values(
+        // Cu 2.0 packs full at 0.350 layer-wise: no room for sharper layers
+        // at 0.35 (results/layerwise/README.md).
+        LayeredCase{kPsd + "/cu2.0.txt", 8, 0.0, 0.95},
+        LayeredCase{kPsd + "/cu2.5.txt", 6, 0.20, 0.85},
+        LayeredCase{kPsd + "/cu3.0.txt", 6, 0.20, 0.85},
+        LayeredCase{kPsd + "/cu3.5.txt", 6, 0.20, 0.85},
+        // The gap-graded soil's fines pass the constrictions of its coarse
+        // grains and settle into their pores from the floor up: a coarse
+        // skeleton filled with fines below, open above, fines on top.
+        LayeredCase{kData + "/gap_graded.txt", 6, 0.10, 0.90},
+        LayeredCase{kData + "/broad_cu6.txt", 5, 0.20, 0.85}),
+    layered_name);
 
 // A target denser than the container packed full: the packer never
 // overlaps and reports exactly what it could not place.
 TEST(FrontPacker, UnreachablePorosityStillGivesAValidSpecimen) {
-  Specimen s = make(kPsd + "/cu2.5.txt", 0.22, 5, Arrangement::discrete);
+  Specimen s = make(kPsd + "/cu2.5.txt", 0.22, 4, Arrangement::discrete);
   expect_invariants(s, 0.22, false, "cu2.5 DA at 0.22");
   long long left = 0;
   for (size_t k = 0; k < s.spec.count.size(); ++k)
@@ -225,20 +320,26 @@ TEST(FrontPacker, UnreachablePorosityStillGivesAValidSpecimen) {
 }
 
 TEST(FrontPacker, SameSeedSameSpecimenOtherSeedOtherSpecimen) {
-  Specimen a = make(kPsd + "/cu2.5.txt", 0.35, 4, Arrangement::discrete, 20, 5);
-  Specimen b = make(kPsd + "/cu2.5.txt", 0.35, 4, Arrangement::discrete, 20, 5);
-  Specimen c = make(kPsd + "/cu2.5.txt", 0.35, 4, Arrangement::discrete, 20, 6);
-  ASSERT_EQ(a.result.placed(), b.result.placed());
-  for (int i = 0; i < a.result.placed(); ++i)
-    ASSERT_EQ(a.result.centre[i], b.result.centre[i]);
-  EXPECT_NE(a.result.centre[5], c.result.centre[5]);
+  for (Arrangement rule : {Arrangement::discrete, Arrangement::layerwise}) {
+    Specimen a = make(kPsd + "/cu2.5.txt", 0.35, 3, rule, 20, 5);
+    Specimen b = make(kPsd + "/cu2.5.txt", 0.35, 3, rule, 20, 5);
+    Specimen c = make(kPsd + "/cu2.5.txt", 0.35, 3, rule, 20, 6);
+    ASSERT_EQ(a.result.placed(), b.result.placed()) << to_string(rule);
+    for (int i = 0; i < a.result.placed(); ++i)
+      ASSERT_EQ(a.result.centre[i], b.result.centre[i]) << to_string(rule);
+    // Another seed, another specimen (LA's first grains, all of the
+    // coarsest size in the corners, may coincide).
+    long long differ = 0, n = std::min(a.result.placed(), c.result.placed());
+    for (long long i = 0; i < n; ++i) differ += a.result.centre[i] != c.result.centre[i];
+    EXPECT_GT(differ, n / 2) << to_string(rule);
+  }
 }
 
 // DA mixes sizes: no radial size trend and like-size contacts no more
 // frequent than random pairing gives (assortativity of ln r at most ~0).
 // At the paper's size (Cu 2.5, 60,000 grains in a cube of 8 coarsest
 // diameters); in smaller cubes the fines along the walls weigh more.
-TEST(FrontPacker, DiscreteHasNoSizeTrendAndNoLikeSizeClustering) {
+TEST(SpecimenFrontPacker, DiscreteHasNoSizeTrendAndNoLikeSizeClustering) {
   Specimen s = make(kPsd + "/cu2.5.txt", 0.35, 8, Arrangement::discrete);
   PackingMeasure m(s.result.centre, s.result.radius, Box{s.spec.lo, s.spec.hi});
   double rho = m.radius_distance_spearman(), assort = m.size_assortativity();
@@ -293,7 +394,7 @@ EndLayers end_layers(Start start) {
   return e;
 }
 
-TEST(FrontPacker, FloorCeilingStartPacksTheTopLikeTheSideWalls) {
+TEST(SpecimenFrontPacker, FloorCeilingStartPacksTheTopLikeTheSideWalls) {
   EndLayers two = end_layers(Start::floor_ceiling);
   EndLayers one = end_layers(Start::floor);
   // the defect this start removes, as measured with one front
@@ -303,35 +404,69 @@ TEST(FrontPacker, FloorCeilingStartPacksTheTopLikeTheSideWalls) {
   EXPECT_GT(two.top_diameter_ratio, 0.85);
 }
 
-// DA's default start takes two fronts, and one front where two leave more
-// of the list unplaced: the gap-graded soil (seed 1, cube of 5 coarsest
-// diameters) loses coarse grains between two fronts and none with one.
-TEST(FrontPacker, AutomaticStartFallsBackToOneFrontWhenTwoLeaveGrains) {
-  ASSERT_EQ(default_start(Arrangement::discrete), Start::automatic);
-  Specimen cu = make(kPsd + "/cu2.5.txt", 0.35, 5, Arrangement::discrete);
-  EXPECT_EQ(cu.result.start, Start::floor_ceiling);
-  EXPECT_EQ(cu.result.unplaced(), 0);
-  Specimen gap = make(kData + "/gap_graded.txt", 0.35, 5, Arrangement::discrete);
-  long long left_by_two = gap.result.unplaced_with_two_fronts;
-  std::printf("gap-graded DA: two fronts leave %lld unplaced; auto took %s and "
-              "leaves %lld\n", left_by_two, to_string(gap.result.start).c_str(),
-              gap.result.unplaced());
-  EXPECT_EQ(gap.result.start, Start::floor);
-  EXPECT_GT(left_by_two, 0);
-  EXPECT_LT(gap.result.unplaced(), left_by_two);
+// DA's default start is automatic (checked on specimens by
+// SpecimenShipped and SpecimenHostile: cu2.5 takes two fronts, the
+// gap-graded soil one).
+TEST(FrontPacker, DiscreteStartsAutomaticallyLayerwiseFromTheFloor) {
+  EXPECT_EQ(default_start(Arrangement::discrete), Start::automatic);
+  EXPECT_EQ(default_start(Arrangement::layerwise), Start::floor);
 }
 
 // The paper's start (a first face at the centre) also fills the container.
 TEST(FrontPacker, CentreStartPlacesEveryGrain) {
   auto psd = ParticleSizeDistribution::read(kPsd + "/cu2.5.txt");
   auto iv = psd.equal_mass_intervals(20);
-  double L = 5 * iv.back().d_mean;
+  double L = 4 * iv.back().d_mean;
   auto list = particle_list(iv, L * L * L, 0.36);
   PackingSpec spec = packing_spec(list, Vec3(0, 0, 0), Vec3(L, L, L));
   spec.start = Start::centre;
   PackingResult r = pack(spec);
   EXPECT_EQ(r.placement[0], Placement::first_face);
   EXPECT_GE(r.placed(), 0.995 * list.total());
+}
+
+// Spearman rank correlation (no ties expected to matter) of two series.
+double spearman(const std::vector<double>& a, const std::vector<double>& b) {
+  auto ranks = [](const std::vector<double>& v) {
+    std::vector<int> idx(v.size());
+    std::iota(idx.begin(), idx.end(), 0);
+    std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return v[i] < v[j]; });
+    std::vector<double> r(v.size());
+    for (size_t i = 0; i < idx.size();) {  // average ranks of ties
+      size_t j = i;
+      while (j + 1 < idx.size() && v[idx[j + 1]] == v[idx[i]]) ++j;
+      for (size_t t = i; t <= j; ++t) r[idx[t]] = 0.5 * (i + j);
+      i = j + 1;
+    }
+    return r;
+  };
+  auto ra = ranks(a), rb = ranks(b);
+  double ma = 0, mb = 0;
+  for (size_t i = 0; i < ra.size(); ++i) ma += ra[i], mb += rb[i];
+  ma /= ra.size(), mb /= rb.size();
+  double sab = 0, saa = 0, sbb = 0;
+  for (size_t i = 0; i < ra.size(); ++i)
+    sab += (ra[i] - ma) * (rb[i] - mb), saa += (ra[i] - ma) * (ra[i] - ma),
+        sbb += (rb[i] - mb) * (rb[i] - mb);
+  return sab / std::sqrt(saa * sbb);
+}
+
+// The rules differ in the draw only: LA follows the list from coarse to
+// fine (the grains of the first loop, in placement order, grow finer), DA
+// draws by number (the coarse sizes somewhat sooner). A small cube.
+TEST(FrontPacker, LayerwiseDrawsCoarseToFineDiscreteAtRandom) {
+  double rho[2];
+  for (Arrangement a : {Arrangement::discrete, Arrangement::layerwise}) {
+    Specimen s = make(kPsd + "/cu2.5.txt", 0.35, 3, a);
+    std::vector<double> order, radius;
+    for (int i = 0; i < s.result.placed(); ++i)
+      if (s.result.placement[i] != Placement::vacancy)
+        order.push_back(i), radius.push_back(s.result.radius[i]);
+    rho[a == Arrangement::layerwise] = spearman(order, radius);
+  }
+  std::printf("Spearman(placement order, radius): DA %.3f, LA %.3f\n", rho[0], rho[1]);
+  EXPECT_LT(rho[1], -0.8);
+  EXPECT_GT(rho[0], -0.3);
 }
 
 TEST(FrontPacker, RejectsUnusableSpecs) {
@@ -348,4 +483,10 @@ TEST(FrontPacker, RejectsUnusableSpecs) {
   EXPECT_THROW(pack(s), std::invalid_argument);
   s.radius = {0.1, 0.2};
   EXPECT_THROW(pack(s), std::invalid_argument);  // counts do not match
+  s.radius = {0.1};
+  s.arrangement = Arrangement::layerwise;
+  for (double w : {0.0, -0.1, std::nan(""), HUGE_VAL}) {
+    s.layering = w;
+    EXPECT_THROW(pack(s), std::invalid_argument) << "layering " << w;
+  }
 }

@@ -431,6 +431,79 @@ TEST(PackingMeasure, UniformityCoefficient) {
   EXPECT_TRUE(std::isnan(PackingMeasure({Vec3(0.5, 0.5, 0.5)}, {0.1}, box(0, 0, 0, 1, 1, 1)).cu()));
 }
 
+// 27 sub-cubes of [0, 3]^3, 64 grains each at random places (overlaps do
+// not matter here): two diameters, 1 and 2 (radius 0.05 and 0.1), by
+// volume 1/9 and 8/9 of each cell in the mixture. Sorted, a cell holds one
+// size only (local Cu 1): the ratio is 1 / Cu of the whole.
+TEST(PackingMeasure, MeanLocalCuRatioOfMixedAndSortedGrains) {
+  Rng rng;
+  std::vector<Vec3> c;
+  std::vector<double> mixed, sorted;
+  for (int cell = 0; cell < 27; ++cell) {
+    const Vec3 lo(cell % 3, (cell / 3) % 3, cell / 9);
+    for (int g = 0; g < 64; ++g) {
+      c.push_back(lo + rng.vec(0.1, 0.9));
+      mixed.push_back(g % 2 == 0 ? 0.05 : 0.1);
+      sorted.push_back(cell % 2 == 0 ? 0.05 : 0.1);
+    }
+  }
+  const Box cube = box(0, 0, 0, 3, 3, 3);
+  const PackingMeasure mix(c, mixed, cube), sort(c, sorted, cube);
+  EXPECT_NEAR(mix.mean_local_cu_ratio(3), 1.0, 1e-12);
+  EXPECT_GT(sort.cu(), 1.2);
+  EXPECT_NEAR(sort.mean_local_cu_ratio(3), 1.0 / sort.cu(), 1e-12);
+  // Cells of fewer grains than asked for are left out; none left: NaN.
+  EXPECT_TRUE(std::isnan(mix.mean_local_cu_ratio(3, 65)));
+  EXPECT_THROW(mix.mean_local_cu_ratio(0), std::invalid_argument);
+}
+
+// The profile by height is by volume: a sphere cut by a layer boundary
+// counts in both layers by its volume in each, never by its centre.
+TEST(PackingMeasure, LayerProfileIsByVolume) {
+  // One sphere of radius 1 centred on the boundary of two layers of [0, 4]
+  // x [0, 4] x [0, 4] (layers [0, 2] and [2, 4]): half of it in each.
+  const PackingMeasure one({Vec3(2, 2, 2)}, {1.0}, box(0, 0, 0, 4, 4, 4));
+  auto two = one.layer_profile(2);
+  ASSERT_EQ(two.size(), 2u);
+  for (const auto& l : two) {
+    EXPECT_NEAR(l.solid_volume, 0.5 * ball(1.0), 1e-12);
+    EXPECT_NEAR(l.porosity, 1.0 - 0.5 * ball(1.0) / 32.0, 1e-12);
+    EXPECT_NEAR(l.mean_diameter, 2.0, 1e-12);
+  }
+  // Along x, three layers: a cap of height 1/3 in each outer layer, the
+  // rest in the middle one (cap formula).
+  auto three = one.layer_profile(3, 0);
+  const double h = 4.0 / 3.0 - 1.0;  // cap height past each inner boundary
+  const double cap = kPi * h * h * (3.0 - h) / 3.0;
+  EXPECT_NEAR(three[0].solid_volume, cap, 1e-12);
+  EXPECT_NEAR(three[2].solid_volume, cap, 1e-12);
+  EXPECT_NEAR(three[1].solid_volume, ball(1.0) - 2 * cap, 1e-12);
+  EXPECT_TRUE(std::isnan(one.layer_profile(8)[0].mean_diameter));  // empty
+  // A bed of coarse spheres under fine ones: the profile's mean diameter
+  // falls with height and its layers add up to the whole.
+  std::vector<Vec3> c;
+  std::vector<double> r;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      c.emplace_back(i + 0.5, j + 0.5, 0.5), r.push_back(0.5);
+      for (int k = 0; k < 4; ++k)
+        c.emplace_back(i + 0.25 + 0.5 * (k % 2), j + 0.25 + 0.5 * (k / 2), 1.25),
+            r.push_back(0.25);
+    }
+  const PackingMeasure bed(c, r, box(0, 0, 0, 4, 4, 2));
+  auto prof = bed.layer_profile(4);
+  double solid = 0.0;
+  for (const auto& l : prof) solid += l.solid_volume;
+  EXPECT_NEAR(solid, 16 * ball(0.5) + 64 * ball(0.25), 1e-10);
+  EXPECT_NEAR(prof[0].mean_diameter, 1.0, 1e-12);
+  EXPECT_NEAR(prof[1].mean_diameter, 1.0, 1e-12);
+  EXPECT_NEAR(prof[2].mean_diameter, 0.5, 1e-12);
+  EXPECT_TRUE(std::isnan(prof[3].mean_diameter));  // above the bed
+  EXPECT_NEAR(prof[3].porosity, 1.0, 1e-12);
+  EXPECT_THROW(bed.layer_profile(0), std::invalid_argument);
+  EXPECT_THROW(bed.layer_profile(2, 3), std::invalid_argument);
+}
+
 TEST(PackingMeasure, WorstOverlap) {
   // Pair (0, 1) overlaps by 0.1 of the smaller radius 0.5, pair (2, 3) by
   // 0.1 of radius 1; (4, 5) only touches.
