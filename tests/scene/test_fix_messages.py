@@ -18,9 +18,10 @@ settings), never its wording.
 3. The specimen's structure: the summary and f_ID[10] give the size
    assortativity of touching pairs (below 0 for a discrete specimen), f_ID[12]
    that of the interior's pairs. A layer-wise specimen is judged by its
-   interior: Cu 2.0 and Cu 3.0, whose like sizes touch mainly in the fine
-   layer on the floor (f_ID[10] above f_ID[12]), get a warning naming both
-   values as the vector holds them; a discrete specimen gets none.
+   interior: Cu 3.0, a graded bed, is layered there and gets no warning;
+   Cu 2.0 at 0.35, which its densest packing leaves no room to layer, gets
+   one naming the value as the vector holds it; a discrete specimen gets
+   none.
 """
 
 import os
@@ -122,30 +123,42 @@ def check_small(args, chk, psd, root):
 
 
 def check_layering(args, chk, root):
-    # a layer-wise specimen not layered in its interior says so, with the
-    # values of the vector: Cu 3.0 in a cube of 4.5 coarsest diameters
-    # (32,000 grains), Cu 2.0 at 0.40 in 8.6 (over the container +0.2 or
-    # more from the fine floor layer, below 0 inside)
-    for soil, edge, porosity in (("cu3.0", 10.4e-3, 0.35),
-                                 ("cu2.0", 8.75e-3, 0.40)):
+    # Layer-wise Cu 3.0 in a cube of 4.5 coarsest diameters (32,000 grains)
+    # is a graded bed: layered in its interior (assortativity 0.1 or more),
+    # coarse at the floor and fine under the ceiling by the profile of
+    # f_ID[20..25], local Cu below the soil's, and no warning. Cu 2.0 at 0.35
+    # packs near its densest whatever the order of the draw, so its interior
+    # stays below 0.1: one warning names that value as the vector holds it.
+    for soil, edge, layered in (("cu3.0", 10.4e-3, True),
+                                ("cu2.0", 8.75e-3, False)):
         inp = su.write_file(os.path.join(root, "in.la_" + soil), su.pack_scene(
-            su.soils.psd_path(soil, args.source), edge, porosity=porosity,
+            su.soils.psd_path(soil, args.source), edge, porosity=0.35,
             arrangement="layerwise", fix_id=FIX, extra_fix="verbose no"))
         res = su.run_launcher(args, inp)
         vec = su.pack_vector(res.text)
-        a = vec and vec["size_assortativity"]
         ai = vec and vec["interior_size_assortativity"]
-        warned = su.warnings_of(res.text, STYLE)
-        chk.check("layer-wise %s at %s: assortativity %s over the container, "
-                  "%s in the interior: one warning and the summary name both "
-                  "as the vector holds them" % (soil, su.num(porosity), a, ai),
-                  res.returncode == 0 and vec is not None and ai < 0.1 and a > ai
-                  and len(warned) == 1
-                  and su.names_value(warned[0], a, ROUNDED)
-                  and su.names_value(warned[0], ai, ROUNDED)
-                  and su.names_value(summary(res.text), a, ROUNDED)
-                  and su.names_value(summary(res.text), ai, ROUNDED),
-                  "\n".join(warned) + res.text[-3000:])
+        warned = [w for w in su.warnings_of(res.text, STYLE)
+                  if vec and su.names_value(w, ai, ROUNDED)]
+        if layered:
+            chk.check("layer-wise %s: interior assortativity %s >= 0.1, floor "
+                      "coarser than the top (%s against %s d_N), local Cu / Cu "
+                      "%s below 0.9, no warning names it"
+                      % (soil, ai, vec and vec["layer1_mean_diameter"],
+                         vec and vec["layer6_mean_diameter"],
+                         vec and vec["local_cu_ratio"]),
+                      res.returncode == 0 and vec is not None and ai >= 0.1
+                      and vec["layer1_mean_diameter"]
+                      > 1.5 * vec["layer6_mean_diameter"]
+                      and vec["local_cu_ratio"] < 0.9 and not warned,
+                      res.text[-3000:])
+        else:
+            chk.check("layer-wise %s at 0.35: interior assortativity %s below "
+                      "0.1: one warning and the summary name it as the vector "
+                      "holds it" % (soil, ai),
+                      res.returncode == 0 and vec is not None and ai < 0.1
+                      and len(warned) == 1
+                      and su.names_value(summary(res.text), ai, ROUNDED),
+                      "\n".join(warned) + res.text[-3000:])
     inp = su.write_file(os.path.join(root, "in.da_cu2.0"), su.pack_scene(
         su.soils.psd_path("cu2.0", args.source), 8.75e-3, porosity=0.40, fix_id=FIX,
         extra_fix="verbose no"))
