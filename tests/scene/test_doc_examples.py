@@ -15,6 +15,9 @@ compute primary/fabric (docs/compute_primary_fabric.md, section Examples):
 4. The complete scene runs as written and prints what the page says it
    prints (the sentence after it quotes the thermo line of step 0).
 5. The output lines (thermo_style, fix ave/time, dump) run in that scene.
+
+6. The fix page's output table quotes pack_outputs.h: the position, name
+   and meaning of every entry, and the vector's size.
 """
 
 import os
@@ -107,7 +110,20 @@ def main():
                   and counts and natoms is not None
                   and int(counts[-1]) == natoms)
     compute_examples(args, chk, root)
+    check_output_table(args, chk, page)
     chk.finish()
+
+
+def check_output_table(args, chk, page):
+    entries = su.outputs.pack_vector(args.source)
+    with open(page) as f:
+        doc = f.read()
+    missing = ["| %d | `%s` | %s |" % e for e in entries
+               if "| %d | `%s` | %s |" % e not in doc]
+    chk.check("the fix page quotes pack_outputs.h: %d entries, position, name "
+              "and meaning" % len(entries),
+              not missing and "global vector** of %d" % len(entries) in doc,
+              "\n".join(missing))
 
 
 def compute_examples(args, chk, root):
