@@ -21,6 +21,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "region.h"
+#include "style_args.h"
 #include "suffusion_criteria.h"
 #include "update.h"
 
@@ -54,76 +55,60 @@ ComputeConstrictionSize::~ComputeConstrictionSize() {
 }
 
 void ComputeConstrictionSize::parse(int narg, char **arg) {
-  auto fail = [&](const std::string &m) {
-    error->all(FLERR, ("Compute constriction/size: " + m).c_str());
-  };
-  auto value = [&](int i, const char *what) -> std::string {
-    if (i + 1 >= narg)
-      fail(std::string("keyword '") + arg[i] + "' needs " + what);
-    return arg[i + 1];
-  };
-  auto number = [&](const std::string &s, const std::string &kw) {
-    char *end = nullptr;
-    double v = strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || !std::isfinite(v))
-      fail(kw + " '" + s + "' is not a number");
-    return v;
-  };
-  for (int i = 0; i < narg; i += 2) {
-    std::string kw = arg[i];
+  const StyleArgs args(error, "Compute constriction/size", narg, arg,
+                       {"container", "wall_margin", "merge", "tolerance",
+                        "loose", "fabric", "control", "psd", "csd"});
+  for (int i = 0; i < args.size(); i += 2) {
+    const std::string kw = args[i];
     if (kw == "container") {
-      region_id_ = value(i, "the ID of a region of style block");
+      region_id_ = args.value(i, "the ID of a region of style block");
     } else if (kw == "wall_margin") {
-      std::string v = value(i, "a length >= 0");
-      options_.wall_margin = number(v, kw);
-      if (options_.wall_margin < 0.0)
-        fail("wall_margin " + v + " must not be negative");
+      options_.wall_margin = args.number(i, "a length >= 0");
+      args.require(options_.wall_margin >= 0.0, i, "must not be negative");
     } else if (kw == "merge") {
-      std::string v = value(i, "coincident or overlap");
-      if (v == "coincident")
-        options_.merging = fabric::PoreMerging::coincident;
-      else if (v == "overlap")
-        options_.merging = fabric::PoreMerging::overlap;
-      else
-        fail("merge '" + v + "' is unknown: use coincident or overlap");
+      options_.merging = args.choice(i, {"coincident", "overlap"}) == 0
+                             ? fabric::PoreMerging::coincident
+                             : fabric::PoreMerging::overlap;
     } else if (kw == "tolerance") {
-      std::string v = value(i, "a share in [0, 0.1]");
-      options_.coincident_tolerance = number(v, kw);
-      if (!(options_.coincident_tolerance >= 0.0 &&
-            options_.coincident_tolerance <= 0.1))
-        fail("tolerance " + v + " must lie in [0, 0.1]");
+      options_.coincident_tolerance = args.number(i, "a share in [0, 0.1]");
+      args.require(options_.coincident_tolerance >= 0.0 &&
+                       options_.coincident_tolerance <= 0.1,
+                   i, "must lie in [0, 0.1]");
     } else if (kw == "loose") {
-      loose_group_ = value(i, "a group ID");
-      int g = group->find(loose_group_.c_str());
-      if (g < 0) fail("loose group '" + loose_group_ + "' does not exist");
+      loose_group_ = args.value(i, "a group ID");
+      const int g = group->find(loose_group_.c_str());
+      if (g < 0) args.fail("loose group '" + loose_group_ + "' does not exist");
       loose_bit_ = group->bitmask[g];
     } else if (kw == "fabric") {
-      fabric_id_ = value(i, "the ID of a compute primary/fabric");
+      fabric_id_ = args.value(i, "the ID of a compute primary/fabric");
     } else if (kw == "control") {
-      std::string v = value(i, "a percent in [5, 95]");
-      control_percent_ = number(v, kw);
-      if (!(control_percent_ >= 5.0 && control_percent_ <= 95.0))
-        fail("control " + v + " must lie in [5, 95]");
+      control_percent_ = args.number(i, "a percent in [5, 95]");
+      args.require(control_percent_ >= 5.0 && control_percent_ <= 95.0, i,
+                   "must lie in [5, 95]");
     } else if (kw == "psd") {
-      std::string file = value(i, "a PSD file");
-      try {
-        auto psd = fabric::ParticleSizeDistribution::read(file);
-        auto kz = fabric::kezdi(psd);
-        auto kl = fabric::kenney_lau(psd);
-        auto bu = fabric::burenkova(psd);
-        auto wf = fabric::wan_fell(psd);
-        double c[6] = {kz.max_ratio, kl.min_ratio, bu.h1, bu.h2,
-                       bu.stable() ? 1.0 : 0.0, wf.probability};
-        std::copy(c, c + 6, criteria_);
-      } catch (const std::exception &e) {
-        fail(e.what());
-      }
+      read_criteria(args, i);
     } else if (kw == "csd") {
-      csd_file_ = value(i, "a file name");
+      csd_file_ = args.value(i, "a file name");
     } else {
-      fail("unknown keyword '" + kw + "': allowed are container wall_margin "
-           "merge tolerance fabric loose control psd csd");
+      args.unknown_keyword(i);
     }
+  }
+}
+
+// The classical criteria of the grading in file arg[i + 1] (entries 52-57).
+void ComputeConstrictionSize::read_criteria(const StyleArgs &args, int i) {
+  try {
+    const auto psd =
+        fabric::ParticleSizeDistribution::read(args.value(i, "a PSD file"));
+    const auto kz = fabric::kezdi(psd);
+    const auto kl = fabric::kenney_lau(psd);
+    const auto bu = fabric::burenkova(psd);
+    const auto wf = fabric::wan_fell(psd);
+    const double c[6] = {kz.max_ratio, kl.min_ratio, bu.h1, bu.h2,
+                         bu.stable() ? 1.0 : 0.0, wf.probability};
+    std::copy(c, c + 6, criteria_);
+  } catch (const std::exception &e) {
+    args.fail(e.what());
   }
 }
 

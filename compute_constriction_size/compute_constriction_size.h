@@ -45,6 +45,7 @@ class ComputeConstrictionSize : public Compute {
 
  private:
   void parse(int narg, char **arg);
+  void read_criteria(const class StyleArgs &args, int i);
   void analyse();  // once per step
   // The pore-forming grains, and the loose grains' diameters and masses, on
   // rank 0 in the order of the atom IDs (empty elsewhere).
