@@ -10,7 +10,7 @@ specimen. Writes, into --dest:
   csd_NAME.txt          the two cumulative CSDs (files of the compute)
   fig_NAME.png          PSD, PFD, LPD and the two CSDs on one size axis
 
-    /usr/bin/python3 results/constriction/verdict.py --study out/small \
+    /usr/bin/python3 tools/constriction_verdict.py --study out/small \
         --launcher build/liggghts-fabric --dest results/constriction/small
 """
 import argparse
@@ -25,7 +25,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 NV = 57
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 
 
 def read_dump(path):
