@@ -50,10 +50,11 @@ BurenkovaResult burenkova(const ParticleSizeDistribution& psd) {
 }
 
 WanFellResult wan_fell(const ParticleSizeDistribution& psd) {
-  double h1 = psd.diameter_at_percent(90.0) / psd.diameter_at_percent(60.0);
-  double h2 = psd.diameter_at_percent(20.0) / psd.diameter_at_percent(5.0);
-  double z = 2.378 * std::log10(h2) - 3.648 * h1 + 3.701;
-  return {h1, h2, 1.0 / (1.0 + std::exp(-z))};
+  const BurenkovaResult b = burenkova(psd);
+  const double l = std::log10(b.h2);
+  auto logistic = [](double z) { return 1.0 / (1.0 + std::exp(-z)); };
+  return {b.h1, b.h2, logistic(2.378 * l - 3.648 * b.h1 + 3.701),
+          logistic(3.875 * l - 3.591 * b.h1 + 2.436)};
 }
 
 }  // namespace fabric
