@@ -12,8 +12,12 @@ a run that goes on and prints numbers):
    estimated overlap and overlap_max;
 4. a container too small for the coarsest interval (side 1.8 coarsest
    diameters: 0.36 grains, rounded to none): stopped before packing;
-5. a value of the `hertz` switch other than 0 or 1, and a negative
-   stiffness number `kappa`: stopped before packing;
+5. a value of the `hertz` switch other than 0 or 1, a negative stiffness
+   number `kappa`, a stiffness number given with Hertz contacts (whose
+   stiffness comes from the material), and a Hertz damping ratio LIGGGHTS
+   cannot set (its restitution coefficient must exceed 0.05): stopped before
+   packing; a stress of 1e9 Pa on quartz Hertz contacts: stopped before the
+   first step, naming youngs as the setting to raise;
    and contact dashpots too strong for the time step (zeta 2: G_n dt 0.62,
    measured to throw grains out of the container): stopped before the first
    step, naming G_n, dt and zeta;
@@ -53,7 +57,13 @@ CASES = [
     ("overlap beyond the limit during the run", {"overlap_max": "2e-4"},
      ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
     ("a contact law the scene does not have", {"hertz": 2},
-     ["hertz 2: use 0 (linear springs, the default) or 1 (Hertzian)"]),
+     ["hertz 2: use 0 (linear springs, the default) or 1 (Hertz-Mindlin"]),
+    ("a stiffness number with Hertz contacts", {"hertz": 1, "kappa": 1963},
+     ["kappa 1963 sets linear springs", "leave kappa 0"]),
+    ("Hertz damping beyond LIGGGHTS' restitution range", {"hertz": 1, "zeta": 0.7},
+     ["zeta 0.7:", "restitution coefficient above 0.05", "below 0.63"]),
+    ("a stress quartz grains cannot carry as small overlaps", {"hertz": 1, "stress": "1e9"},
+     ["the target stress 1e9 Pa", "above overlap_max 0.05", "lower stress or raise youngs"]),
     ("a negative stiffness number", {"kappa": -1},
      ["kappa -1: use 0 (K_n, K_t from kn, kt) or a positive stiffness number"]),
     ("contact dashpots too strong for the time step", {"zeta": 2},
