@@ -20,6 +20,14 @@ diameter, where a layer-wise specimen keeps its fines (docs/validation.md);
 the core, the grains whose centres lie one d_N or more from every wall
 (the side walls too, found from the grains' extent in x and y), away from
 every wall layer; and the whole specimen.
+
+With --slices N, the specimen is cut instead into N slices of equal height
+from the floor to the top, and each slice also gives its fines: the grains
+finer than the specimen's d15 by mass (the finest 15 % of the mass, three of
+the paper's 20 intervals), their share of the specimen's fines and the
+primary share of their mass. In a layered specimen the fines should carry
+load where they form a layer of their own (docs/validation.md). --csv FILE
+writes the rows of every argument to one CSV.
 """
 import argparse
 import os
@@ -88,26 +96,84 @@ def layers(cols):
     return out, top
 
 
+def slices(cols, n):
+    """Rows (lo, hi, grains, mass %, primary %, d_mean/d_N, fines % of the
+    specimen's fines mass, primary % of the slice's fines mass), heights in
+    d_N from the floor, n slices of equal height."""
+    z, r, m = cols["z"], cols["radius"], cols["mass"]
+    primary = cols["c_pf[2]"] > 0.5
+    dn = 2.0 * r.max()
+    floor = (z - r).min()
+    h = (z - floor) / dn
+    top = ((z + r).max() - floor) / dn
+    d = 2.0 * r
+    order = np.argsort(d)
+    cum = np.cumsum(m[order]) / m.sum()
+    d15 = d[order][np.searchsorted(cum, 0.15)]
+    fine = d <= d15
+    edges = np.linspace(0.0, top, n + 1)
+    out = []
+    for k in range(n):
+        g = (h >= edges[k]) & ((h < edges[k + 1]) if k < n - 1 else (h <= top))
+        mass = m[g].sum()
+        fm = m[g & fine].sum()
+        nan = float("nan")
+        out.append((edges[k], edges[k + 1], int(g.sum()), 100.0 * mass / m.sum(),
+                    100.0 * m[g & primary].sum() / mass if mass > 0 else nan,
+                    (m[g] * d[g]).sum() / mass / dn if mass > 0 else nan,
+                    100.0 * fm / m[fine].sum(),
+                    100.0 * m[g & fine & primary].sum() / fm if fm > 0 else nan))
+    return out, top, d15 / dn
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("paths", nargs="+", metavar="RUN_OR_DUMP")
+    p.add_argument("--slices", type=int, metavar="N",
+                   help="N slices of equal height instead of the wall layers, with the fines")
+    p.add_argument("--csv", metavar="FILE", help="with --slices: write the rows to this CSV")
     args = p.parse_args()
+    if args.slices is not None and args.slices < 1:
+        sys.exit("fabric_layers: --slices %d: give one slice or more" % args.slices)
+    if args.csv and args.slices is None:
+        sys.exit("fabric_layers: --csv needs --slices")
+    csv_rows = []
     for path in args.paths:
         dump = os.path.join(path, "final.dump") if os.path.isdir(path) else path
         if not os.path.isfile(dump):
             sys.exit("fabric_layers: no dump at %s (give a run folder with final.dump "
                      "or a dump file)" % dump)
         try:
-            rows, top = layers(last_snapshot(dump))
+            cols = last_snapshot(dump)
+            rows, top = layers(cols)
+            if args.slices:
+                srows, top, d15 = slices(cols, args.slices)
         except ValueError as e:
             sys.exit("fabric_layers: %s: %s" % (dump, e))
+        if args.slices:
+            name = os.path.basename(os.path.normpath(path))
+            print("# %s: height %.2f coarsest diameters; fines: finer than d15 = %.3f d_N"
+                  % (dump, top, d15))
+            print("%13s %8s %7s %9s %10s %9s %11s" % ("height/d_N", "grains", "mass%",
+                  "primary%", "d_mean/d_N", "fines%", "fines_prim%"))
+            for lo, hi, n, mass, prim, dm, fsh, fprim in srows:
+                print("%6.2f-%-6.2f %8d %7.2f %9.2f %10.3f %9.2f %11.2f"
+                      % (lo, hi, n, mass, prim, dm, fsh, fprim))
+                csv_rows.append((name, lo, hi, n, mass, prim, dm, fsh, fprim))
+            continue
         print("# %s: height %.2f coarsest diameters" % (dump, top))
         print("%-28s %13s %8s %7s %10s %9s" % ("layer", "height/d_N", "grains",
                                              "mass%", "primary%", "d_mean/d_N"))
         for label, lo, hi, n, mass, prim, dm in rows:
             print("%-28s %6.2f-%-6.2f %8d %7.2f %10.2f %9.3f"
                   % (label, lo, hi, n, mass, prim, dm))
+    if args.csv:
+        with open(args.csv, "w") as f:
+            f.write("run,height_lo_dN,height_hi_dN,grains,mass_pct,primary_pct,"
+                    "d_mean_over_dN,fines_share_pct,fines_primary_pct\n")
+            for row in csv_rows:
+                f.write("%s,%.3f,%.3f,%d,%.3f,%.3f,%.4f,%.3f,%.3f\n" % row)
 
 
 if __name__ == "__main__":

@@ -17,7 +17,9 @@ runs, which does not need a specimen at rest:
 3. tools/fabric_layers.py cuts every run's final state into layers by
    height: they hold every grain once and all of the mass, the core lies
    inside the interior, and the whole specimen's primary share is the CSV
-   row's.
+   row's; cut into equal slices (--slices, --csv) the slices hold every
+   grain, all of the mass and all of the fines, and their primary shares
+   weighted by mass give the CSV row's.
 """
 import csv
 import os
@@ -168,6 +170,26 @@ def main():
                   % (row["name"], core, got["interior"][0] if ok else -1),
                   ok and 0 < core < got["interior"][0],
                   p4.stdout[-1500:])
+        # --slices: equal slices hold every grain once, all of the mass and
+        # all of the fines; their primary shares, weighted by mass, give the
+        # whole specimen's
+        csvp = os.path.join(args.work, row["name"] + "_slices.csv")
+        p5 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
+                             "--slices", "5", "--csv", csvp, rundir],
+                            cwd=args.source, capture_output=True, text=True, timeout=120)
+        sl = list(csv.DictReader(open(csvp))) if p5.returncode == 0 and os.path.isfile(csvp) else []
+        f = lambda k: [float(r[k]) for r in sl]
+        ok = len(sl) == 5
+        grains = sum(int(r["grains"]) for r in sl)
+        mass = sum(f("mass_pct")) if ok else -1
+        fines = sum(f("fines_share_pct")) if ok else -1
+        whole = sum(a * b for a, b in zip(f("mass_pct"), f("primary_pct"))) / 100 if ok else -1
+        chk.check("%s: fabric_layers --slices 5: %d grains (CSV %s), mass %.2f %%, fines %.2f %%, "
+                  "mass-weighted primary %.2f %% (CSV %s)"
+                  % (row["name"], grains, row["grains"], mass, fines, whole, row["primary_mass_pct"]),
+                  ok and grains == int(row["grains"]) and abs(mass - 100) < 0.01
+                  and abs(fines - 100) < 0.01 and abs(whole - float(row["primary_mass_pct"])) < 0.015,
+                  p5.stdout[-1500:] + p5.stderr[-1500:])
     chk.finish()
 
 
