@@ -22,14 +22,12 @@
 #include "modify.h"
 #include "region.h"
 #include "style_args.h"
-#include "suffusion_criteria.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
 const int kLocalColumns = 7;  // centre x y z, normal x y z, radius
-const int kPercentiles = 19;  // D_c5 .. D_c95
 }  // namespace
 
 ComputeConstrictionSize::ComputeConstrictionSize(LAMMPS *lmp, int iarg,
@@ -40,7 +38,7 @@ ComputeConstrictionSize::ComputeConstrictionSize(LAMMPS *lmp, int iarg,
                       "(sphere: radius, rmass)");
   parse(narg - iarg, arg + iarg);
   vector_flag = 1;
-  size_vector = kVectorSize;
+  size_vector = fabric::kConstrictionVectorEntries;
   extvector = 0;
   local_flag = 1;
   size_local_rows = 0;
@@ -95,18 +93,11 @@ void ComputeConstrictionSize::parse(int narg, char **arg) {
   }
 }
 
-// The classical criteria of the grading in file arg[i + 1] (entries 52-57).
+// The classical criteria of the grading in file arg[i + 1] (entries 52-58).
 void ComputeConstrictionSize::read_criteria(const StyleArgs &args, int i) {
   try {
-    const auto psd =
-        fabric::ParticleSizeDistribution::read(args.value(i, "a PSD file"));
-    const auto kz = fabric::kezdi(psd);
-    const auto kl = fabric::kenney_lau(psd);
-    const auto bu = fabric::burenkova(psd);
-    const auto wf = fabric::wan_fell(psd);
-    const double c[6] = {kz.max_ratio, kl.min_ratio, bu.h1, bu.h2,
-                         bu.stable() ? 1.0 : 0.0, wf.probability};
-    std::copy(c, c + 6, criteria_);
+    criteria_ = fabric::grading_criteria(
+        fabric::ParticleSizeDistribution::read(args.value(i, "a PSD file")));
   } catch (const std::exception &e) {
     args.fail(e.what());
   }
@@ -169,10 +160,10 @@ ComputeConstrictionSize::Grains ComputeConstrictionSize::gather() {
     const double *f = &all[k * kFields];
     if (f[6] == 1.0) {
       g.skeleton.push_back({fabric::Vec3(f[1], f[2], f[3]), f[4]});
-      g.skeleton_mass.push_back(f[5]);
+      g.verdict.pore_forming_mass += f[5];
     } else {
-      g.loose_diameter.push_back(2.0 * f[4]);
-      g.loose_mass.push_back(f[5]);
+      g.verdict.loose_diameter.push_back(2.0 * f[4]);
+      g.verdict.loose_mass.push_back(f[5]);
     }
   }
   return g;
@@ -222,37 +213,9 @@ void ComputeConstrictionSize::analyse() {
 
 void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net,
                                           const Grains &g) {
-  std::vector<double> p;
-  for (int k = 1; k <= kPercentiles; ++k) p.push_back(5.0 * k);
-  std::vector<double> by_number = fabric::csd_percentiles(net.discs, p, false);
-  std::vector<double> by_cubic = fabric::csd_percentiles(net.discs, p, true);
-  vector[0] = static_cast<double>(net.discs.size());
-  for (int k = 0; k < kPercentiles; ++k) {
-    vector[1 + k] = by_number[k];
-    vector[1 + kPercentiles + k] = by_cubic[k];
-  }
-  vector[kPercolation - 1] = net.percolation_diameter;
-  vector[kControl - 1] =
-      fabric::csd_percentiles(net.discs, {control_percent_}, false)[0];
-  // The verdict: loose grains finer than the controlling constriction and
-  // than the percolation opening, by mass.
-  vector[kLooseFinerControl - 1] = fabric::mass_percent_finer(
-      g.loose_diameter, g.loose_mass, vector[kControl - 1]);
-  vector[kLooseFinerPercolation - 1] = fabric::mass_percent_finer(
-      g.loose_diameter, g.loose_mass, net.percolation_diameter);
-  double loose = 0.0, all = 0.0;
-  for (double m : g.loose_mass) loose += m;
-  for (double m : g.skeleton_mass) all += m;
-  all += loose;
-  vector[kLooseMassPercent - 1] = all > 0.0 ? 100.0 * loose / all : 0.0;
-  vector[kPores - 1] = net.pores;
-  vector[kGrains - 1] = net.spheres;
-  vector[kHidden - 1] = net.hidden;
-  vector[kWallExcluded - 1] = net.wall_excluded;
-  vector[kOnEdge - 1] = net.on_edge;
-  vector[kUnsolved - 1] = net.unsolved;
-  vector[kWallMargin - 1] = net.wall_margin;
-  std::copy(criteria_, criteria_ + 6, vector + kKezdi - 1);
+  const std::vector<double> v = fabric::constriction_vector(
+      net, control_percent_, g.verdict, criteria_);
+  std::copy(v.begin(), v.end(), vector);
   char m[512];
   if (net.hidden > 0) {
     snprintf(m, sizeof m, "Compute constriction/size: %ld of %ld grains "

@@ -2,8 +2,8 @@
    the grains of a group (the whole specimen or its primary fabric) and the
    share of a loose group that fits through it (see
    docs/compute_constriction_size.md). A thin adapter: the triangulation and
-   the constrictions live in constriction_network.* (no LIGGGHTS include);
-   this class gathers the group's grains to rank 0, which triangulates, and
+   the constrictions live in constriction_network.*, the global vector's
+   entries in constriction_outputs.* (no LIGGGHTS include); this class gathers the group's grains to rank 0, which triangulates, and
    broadcasts the result. */
 
 #ifdef COMPUTE_CLASS
@@ -19,23 +19,12 @@ ComputeStyle(constriction/size,ComputeConstrictionSize)
 #include <vector>
 
 #include "compute.h"
-#include "constriction_network.h"
+#include "constriction_outputs.h"
 
 namespace LAMMPS_NS {
 
 class ComputeConstrictionSize : public Compute {
  public:
-  // Global vector: 1 the number of constrictions, 2..20 D_c5..D_c95 by
-  // number, 21..39 the same weighted by D_c^3, then these (1-based).
-  enum {
-    kPercolation = 40, kControl, kLooseFinerControl, kLooseFinerPercolation,
-    kLooseMassPercent, kPores, kGrains, kHidden, kWallExcluded, kOnEdge,
-    kUnsolved, kWallMargin,
-    // The classical criteria of the PSD of keyword psd (0 without).
-    kKezdi, kKenneyLau, kBurenkovaH1, kBurenkovaH2, kBurenkovaStable,
-    kWanFell, kVectorSize = kWanFell
-  };
-
   ComputeConstrictionSize(class LAMMPS *, int, int, char **);
   ~ComputeConstrictionSize();
   void init();
@@ -51,7 +40,7 @@ class ComputeConstrictionSize : public Compute {
   // rank 0 in the order of the atom IDs (empty elsewhere).
   struct Grains {
     std::vector<fabric::Sphere> skeleton;
-    std::vector<double> skeleton_mass, loose_diameter, loose_mass;
+    fabric::VerdictGrains verdict;
   };
   Grains gather();
   void fill_vector(const fabric::ConstrictionNetwork &net, const Grains &g);
@@ -64,7 +53,7 @@ class ComputeConstrictionSize : public Compute {
 
   fabric::ConstrictionOptions options_;
   std::string region_id_, loose_group_, csd_file_, fabric_id_;
-  double criteria_[6] = {0, 0, 0, 0, 0, 0};  // of keyword psd
+  fabric::GradingCriteria criteria_;  // of keyword psd (0 without)
   class Compute *fabric_ = nullptr;  // compute primary/fabric (keyword fabric)
   int loose_bit_ = 0;
   double control_percent_ = 35.0;

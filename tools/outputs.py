@@ -1,5 +1,5 @@
-"""The outputs of our two styles, read from the one table each defines them
-in, for every tool and test:
+"""The outputs of our styles, read from the one table each defines them in,
+for every tool and test:
 
   compute primary/fabric  compute_primary_fabric/fabric_outputs.h
                           FABRIC_VECTOR_ENTRIES (global vector, entries
@@ -8,6 +8,9 @@ in, for every tool and test:
                           size interval)
   fix sequential/pack     fix_sequential_pack/pack_outputs.h
                           PACK_VECTOR_ENTRIES (global vector)
+  compute constriction/size
+                          compute_constriction_size/constriction_outputs.h
+                          CONSTRICTION_VECTOR_ENTRIES (global vector)
 
 Each table is one X(position, name, "meaning") per line, positions from 1
 as c_ID[I] and f_ID[I] count them. Also here: the output files of
@@ -27,6 +30,7 @@ import numpy as np
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir))
 FABRIC_HEADER = os.path.join("compute_primary_fabric", "fabric_outputs.h")
 PACK_HEADER = os.path.join("fix_sequential_pack", "pack_outputs.h")
+CONSTRICTION_HEADER = os.path.join("compute_constriction_size", "constriction_outputs.h")
 
 Entry = namedtuple("Entry", "position name meaning")
 
@@ -34,7 +38,7 @@ Entry = namedtuple("Entry", "position name meaning")
 def read_table(path, macro):
     """The entries of the X-macro table `macro` in the header `path`: a list
     of Entry(position, name, meaning), checked to be numbered 1..n."""
-    with open(path) as f:
+    with open(path, encoding="utf-8") as f:
         text = f.read()
     head = "#define %s(X)" % macro
     if head not in text:
@@ -61,6 +65,12 @@ def fabric_array(source=ROOT):
 def pack_vector(source=ROOT):
     """fix sequential/pack: the entries of the global vector."""
     return read_table(os.path.join(source, PACK_HEADER), "PACK_VECTOR_ENTRIES")
+
+
+def constriction_vector(source=ROOT):
+    """compute constriction/size: the entries of the global vector."""
+    return read_table(os.path.join(source, CONSTRICTION_HEADER),
+                      "CONSTRICTION_VECTOR_ENTRIES")
 
 
 def index(entries):

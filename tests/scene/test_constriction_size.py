@@ -7,12 +7,15 @@
    constriction diameter, D_c5..D_c95 and the percolation opening, is
    2 (a / sqrt 2 - R); the loose grains finer than it (half of them, 0.5 mm)
    are counted as passing by their mass, the coarser (1.0 mm) not; `loose`
-   with a group gives the same verdict. The whole specimen (no `fabric`)
-   gives finer constrictions. 1, 2 and 4 ranks print the same vector to the
-   last digit, and the local discs number entry 1.
+   with a group gives the same verdict; without `psd` the criteria are 0.
+   The whole specimen (no `fabric`) gives finer constrictions. 1, 2 and 4
+   ranks print the same vector to the last digit, and the local discs
+   number entry 1.
 2. The examples of docs/compute_constriction_size.md run as written (the
    second in the lattice scene, where compute pf exists); the first prints
-   the same vector on 1, 2 and 4 ranks.
+   the same vector on 1, 2 and 4 ranks, the second both Wan & Fell
+   probabilities of its psd. The page's output table quotes
+   constriction_outputs.h (entries by name, as every check here reads them).
 3. Bad input stops with an error (3 grains, a sphere container, an unknown
    keyword, a fabric compute of another style) and a grain hidden inside
    another is counted with a warning.
@@ -28,7 +31,13 @@ R = 1.0005e-3       # lattice grain radius: overlaps of 1e-6 m
 N = 6               # grains per lattice edge
 D_OPEN = 2.0 * (A / math.sqrt(2.0) - R)
 FINE, COARSE = 0.5e-3, 1.0e-3   # loose diameters, alternating
-NV = 57
+# The global vector, by the names of constriction_outputs.h: AT[name] is the
+# 0-based index of an entry.
+ENTRIES = su.outputs.constriction_vector()
+NV = len(ENTRIES)
+AT = su.outputs.index(ENTRIES)
+DIAMETERS = slice(AT["dc5_number"], AT["dc95_cubed"] + 1)   # D_c5..D_c95, twice
+CRITERIA = slice(AT["kezdi_max_ratio"], AT["wan_fell_sand_gravel_probability"] + 1)
 
 MATERIALS = """\
 pair_style      gran model hooke tangential history
@@ -138,26 +147,36 @@ def lattice_checks(args, chk):
         if ranks:
             continue
         cs, cl, ca = vs
+        dc = cs[DIAMETERS]
         chk.check("fabric pf: D_c5..D_c95 and D_c by D^3 all %.9g (got %.9g..%.9g)"
-                  % (D_OPEN, min(cs[1:39]), max(cs[1:39])),
-                  all(abs(v - D_OPEN) < 1e-9 * D_OPEN for v in cs[1:39]))
-        chk.check("percolation opening %.9g = D_open" % cs[39],
-                  abs(cs[39] - D_OPEN) < 1e-9 * D_OPEN)
+                  % (D_OPEN, min(dc), max(dc)),
+                  all(abs(v - D_OPEN) < 1e-9 * D_OPEN for v in dc))
+        perc = cs[AT["percolation"]]
+        chk.check("percolation opening %.9g = D_open" % perc,
+                  abs(perc - D_OPEN) < 1e-9 * D_OPEN)
+        finer = cs[AT["loose_finer_control_percent"]]
         chk.check("loose finer than D_c35: %.6f %% = %.6f %% (the 0.5 mm ones)"
-                  % (cs[41], expect_pass), abs(cs[41] - expect_pass) < 1e-6)
-        chk.check("loose finer than the percolation opening: %.6f %%" % cs[42],
-                  abs(cs[42] - expect_pass) < 1e-6)
-        chk.check("triangulated grains %d = the lattice's %d" % (cs[45], N ** 3),
-                  cs[45] == N ** 3)
+                  % (finer, expect_pass), abs(finer - expect_pass) < 1e-6)
+        finer = cs[AT["loose_finer_percolation_percent"]]
+        chk.check("loose finer than the percolation opening: %.6f %%" % finer,
+                  abs(finer - expect_pass) < 1e-6)
+        chk.check("triangulated grains %d = the lattice's %d"
+                  % (cs[AT["grains"]], N ** 3), cs[AT["grains"]] == N ** 3)
         chk.check("loose group gives the same CSD and verdict",
-                  cl[:39] == cs[:39] and abs(cl[41] - cs[41]) < 1e-9)
+                  cl[:DIAMETERS.stop] == cs[:DIAMETERS.stop]
+                  and abs(cl[AT["loose_finer_control_percent"]]
+                          - cs[AT["loose_finer_control_percent"]]) < 1e-9)
+        chk.check("without psd the criteria (entries %d-%d) are 0: %s"
+                  % (CRITERIA.start + 1, CRITERIA.stop, cs[CRITERIA]),
+                  cs[CRITERIA] == [0.0] * (CRITERIA.stop - CRITERIA.start))
+        n_all, n_pf = ca[AT["constrictions"]], cs[AT["constrictions"]]
         chk.check("the whole specimen (fines split the pores): %d > %d "
                   "constrictions, D_c5 %.4g finer than %.4g"
-                  % (ca[0], cs[0], ca[1], D_OPEN),
-                  ca[0] > cs[0] and ca[1] < 0.99 * D_OPEN)
+                  % (n_all, n_pf, ca[AT["dc5_number"]], D_OPEN),
+                  n_all > n_pf and ca[AT["dc5_number"]] < 0.99 * D_OPEN)
         rows = local_rows(os.path.join(args.work, name, "discs.txt"))
         chk.check("the dump local (6 digits) holds entry 1 = %d discs of radius D_open/2"
-                  % cs[0], len(rows) == int(cs[0]) and all(
+                  % n_pf, len(rows) == int(n_pf) and all(
                       abs(r[6] - D_OPEN / 2) < 1e-5 * D_OPEN for r in rows))
     if 1 in vectors:
         for r in (2, 4):
@@ -190,17 +209,19 @@ def doc_examples(args, chk):
         if ok:
             vec[ranks or 1] = last_thermo(res.text, "csd")
     if vec.get(1):
-        v = vec[1]
+        v = {e.name: vec[1][e.position - 1] for e in ENTRIES}
+        n = v["constrictions"]
         chk.check("example 1: %d constrictions, D_c35 %.3g <= D_c50 %.3g, %d pores"
-                  % (v[0], v[7], v[10], v[44]),
-                  v[0] > 100 and 0 < v[7] <= v[10] and v[44] > v[0] / 10)
+                  % (n, v["dc35_number"], v["dc50_number"], v["pores"]),
+                  n > 100 and 0 < v["dc35_number"] <= v["dc50_number"]
+                  and v["pores"] > n / 10)
         with open(os.path.join(root, "csd_all.txt")) as f:
             rows = [l for l in f if not l.startswith("#")]
-        chk.check("csd_all.txt has entry 1 = %d rows" % len(rows), len(rows) == v[0])
+        chk.check("csd_all.txt has entry 1 = %d rows" % len(rows), len(rows) == n)
         for r in (2, 4):
             if vec.get(r):
                 chk.check("example 1: %d ranks print the vector of 1 rank" % r,
-                          vec[r] == v)
+                          vec[r] == vec[1])
     text = lattice_scene() + blocks[1] + "run 0\n"
     ex2 = os.path.join(args.work, "example2")
     os.makedirs(ex2, exist_ok=True)
@@ -212,6 +233,44 @@ def doc_examples(args, chk):
         snaps = [f for f in os.listdir(os.path.join(args.work, "example2"))
                  if f.startswith("discs_")]
         chk.check("example 2 writes the discs (%s)" % snaps, len(snaps) == 1)
+        # psd: both Wan & Fell models, probabilities that differ
+        cols = thermo_columns(res.text)
+        p57, p58 = (cols.get("csp[%d]" % (AT[n] + 1)) for n in
+                    ("wan_fell_probability", "wan_fell_sand_gravel_probability"))
+        chk.check("example 2 prints both Wan & Fell probabilities of the psd "
+                  "(%s, %s): in (0, 1), not equal" % (p57, p58),
+                  p57 is not None and p58 is not None and 0 < p57 < 1
+                  and 0 < p58 < 1 and p57 != p58, cols)
+
+
+def thermo_columns(text):
+    """{column: value} of the first row after the last thermo header."""
+    lines = text.splitlines()
+    out = {}
+    for i, l in enumerate(lines[:-1]):
+        head, vals = l.split(), lines[i + 1].split()
+        if head[:1] == ["Step"] and len(vals) == len(head) and vals[0].isdigit():
+            out = dict(zip(head, (float(v) for v in vals)))
+    return out
+
+
+def doc_table(args, chk):
+    """The page's output table quotes constriction_outputs.h: every entry
+    as `| position | `name` | meaning |`, but the percentiles 2-20 and
+    21-39, one row each naming the first and last entry; and the size."""
+    with open(os.path.join(args.source, "docs", "compute_constriction_size.md"),
+              encoding="utf-8") as f:
+        doc = f.read()
+    rows = []
+    for first, last in (("dc5_number", "dc95_number"), ("dc5_cubed", "dc95_cubed")):
+        rows.append("| %d–%d | `%s` … `%s` |" % (AT[first] + 1, AT[last] + 1, first, last))
+    rows += ["| %d | `%s` | %s |" % e for e in ENTRIES
+             if not DIAMETERS.start <= e.position - 1 < DIAMETERS.stop]
+    missing = [r for r in rows if r not in doc]
+    chk.check("the page quotes constriction_outputs.h: %d entries, position, "
+              "name and meaning" % NV,
+              not missing and "**global vector** of %d entries" % NV in doc,
+              "\n".join(missing))
 
 
 def bad_input(args, chk):
@@ -242,8 +301,9 @@ def bad_input(args, chk):
     res = run(args, chk, "hidden", text)
     if res:
         v = last_thermo(res.text, "cs")
-        chk.check("the hidden grain is counted (entry 47 = %s) with a warning"
-                  % (v and v[46]), v and v[46] == 1 and re.search(
+        hidden = v and v[AT["hidden"]]
+        chk.check("the hidden grain is counted (entry %d = %s) with a warning"
+                  % (AT["hidden"] + 1, hidden), hidden == 1 and re.search(
                       r"WARNING: Compute constriction/size: 1 of", res.text))
 
 
@@ -252,6 +312,7 @@ def main():
     chk = su.Checker()
     lattice_checks(args, chk)
     doc_examples(args, chk)
+    doc_table(args, chk)
     bad_input(args, chk)
     chk.finish()
 
