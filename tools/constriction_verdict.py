@@ -18,14 +18,20 @@ import csv
 import os
 import re
 import subprocess
+import sys
 
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
 
-NV = 57
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import outputs  # noqa: E402  (the compute's output table)
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+# The compute's global vector, by the names of constriction_outputs.h.
+ENTRIES = outputs.constriction_vector(ROOT)
+NV = len(ENTRIES)
 
 
 def read_dump(path):
@@ -84,7 +90,7 @@ def vectors(text):
             for n in lines[i + 1:i + 4]:
                 v = n.split()
                 if len(v) == NV + 1 and v[0].isdigit():
-                    out[m[1][:2]] = [float(x) for x in v[1:]]
+                    out[m[1][:2]] = {e.name: float(x) for e, x in zip(ENTRIES, v[1:])}
                     break
     return out
 
@@ -112,18 +118,25 @@ def figure(path, name, psd, g, csd_p, csd_a, vp):
     for c, lab, st in ((csd_p, "CSD primary fabric", "g--"), (csd_a, "CSD whole specimen", "m:")):
         if len(c):
             ax.plot(c[:, 0] * 1e3, c[:, 1], st, label=lab + " (by number)")
-    ax.axvline(vp[40] * 1e3, color="g", lw=0.8)
-    ax.axvline(vp[39] * 1e3, color="g", lw=0.8, ls="-.")
+    ax.axvline(vp["control"] * 1e3, color="g", lw=0.8)
+    ax.axvline(vp["percolation"] * 1e3, color="g", lw=0.8, ls="-.")
     ax.set_xscale("log")
     ax.set_xlabel("diameter (mm); green lines: D_c35 and percolation opening of the primary fabric")
     ax.set_ylabel("% finer (PSD, PFD, LPD: of the mass)")
     ax.set_ylim(0, 100)
-    ax.set_title(name + " (small size, side 3.3)")
+    ax.set_title(title(name))
     ax.legend(fontsize=7, loc="upper left")
     ax.grid(alpha=0.3, which="both")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def title(name):
+    """The figure's title: the run's name, with its side if the name gives
+    one (side3.3: a cube 3.3 coarsest diameters wide)."""
+    m = re.search(r"side(\d+(\.\d+)?)", name)
+    return "%s (side %s)" % (name, m.group(1)) if m else name
 
 
 def load_csd(path):
@@ -173,20 +186,26 @@ def main():
         prim = g["c_pf[2]"] == 1
         table.append({
             "run": name, "grains": len(prim), "primary_grains": int(prim.sum()),
-            "primary_mass_percent": round(100 - vp[43], 3),
-            "constrictions_primary": int(vp[0]), "Dc35_primary_m": "%.5g" % vp[40],
-            "percolation_primary_m": "%.5g" % vp[39],
-            "loose_finer_Dc35_percent": round(vp[41], 3),
-            "loose_finer_percolation_percent": round(vp[42], 3),
-            "Dc35_all_m": "%.5g" % va[40], "percolation_all_m": "%.5g" % va[39],
-            "kezdi_max_ratio": round(vp[51], 3), "kezdi": "stable" if vp[51] <= 4 else "unstable",
-            "kenney_lau_min_HF": round(vp[52], 3), "kenney_lau": "stable" if vp[52] >= 1 else "unstable",
-            "burenkova_h1": round(vp[53], 3), "burenkova_h2": round(vp[54], 3),
-            "burenkova": "stable" if vp[55] == 1 else "suffusive",
-            "wan_fell_P": round(vp[56], 3), "wan_fell": "stable" if vp[56] <= 0.5 else "unstable",
+            "primary_mass_percent": round(100 - vp["loose_mass_percent"], 3),
+            "constrictions_primary": int(vp["constrictions"]),
+            "Dc35_primary_m": "%.5g" % vp["control"],
+            "percolation_primary_m": "%.5g" % vp["percolation"],
+            "loose_finer_Dc35_percent": round(vp["loose_finer_control_percent"], 3),
+            "loose_finer_percolation_percent": round(vp["loose_finer_percolation_percent"], 3),
+            "Dc35_all_m": "%.5g" % va["control"], "percolation_all_m": "%.5g" % va["percolation"],
+            "kezdi_max_ratio": round(vp["kezdi_max_ratio"], 3),
+            "kezdi": "stable" if vp["kezdi_max_ratio"] <= 4 else "unstable",
+            "kenney_lau_min_HF": round(vp["kenney_lau_min_ratio"], 3),
+            "kenney_lau": "stable" if vp["kenney_lau_min_ratio"] >= 1 else "unstable",
+            "burenkova_h1": round(vp["burenkova_h1"], 3), "burenkova_h2": round(vp["burenkova_h2"], 3),
+            "burenkova": "stable" if vp["burenkova_stable"] == 1 else "suffusive",
+            "wan_fell_P": round(vp["wan_fell_probability"], 3),
+            "wan_fell": "stable" if vp["wan_fell_probability"] <= 0.5 else "unstable",
+            "wan_fell_sand_gravel_P": round(vp["wan_fell_sand_gravel_probability"], 3),
         })
         print("%-28s primary %5.1f %% by mass; Dc35 %.4g m, percolation %.4g m; loose finer: %.1f %% / %.1f %%"
-              % (name, table[-1]["primary_mass_percent"], vp[40], vp[39], vp[41], vp[42]))
+              % (name, table[-1]["primary_mass_percent"], vp["control"], vp["percolation"],
+                 vp["loose_finer_control_percent"], vp["loose_finer_percolation_percent"]))
     if table:
         with open(os.path.join(a.dest, "verdict.csv"), "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(table[0]))
