@@ -56,6 +56,16 @@ def last_snapshot(path):
     return {n: rows[:, j] for j, n in enumerate(names)}
 
 
+def heights(cols):
+    """(radius, mass, primary mask, d_N, height of each centre and of the
+    top, in d_N from the lowest grain's bottom)."""
+    z, r, m = cols["z"], cols["radius"], cols["mass"]
+    dn = 2.0 * r.max()
+    floor = (z - r).min()
+    return (r, m, cols["c_pf[2]"] > 0.5, dn, (z - floor) / dn,
+            ((z + r).max() - floor) / dn)
+
+
 def layers(cols):
     """Rows (label, lo, hi, grains, mass %, primary % of its mass,
     mean diameter / d_N), heights in d_N from the floor."""
@@ -65,12 +75,7 @@ def layers(cols):
     for need in ("x", "y"):
         if need not in cols:
             raise ValueError("the dump has no column %s" % need)
-    z, r, m = cols["z"], cols["radius"], cols["mass"]
-    primary = cols["c_pf[2]"] > 0.5
-    dn = 2.0 * r.max()
-    floor = (z - r).min()
-    h = (z - floor) / dn
-    top = ((z + r).max() - floor) / dn
+    r, m, primary, dn, h, top = heights(cols)
     cuts = [("floor, first half d_N", 0.0, 0.5),
             ("floor, second half d_N", 0.5, 1.0),
             ("interior", 1.0, top - 1.0),
@@ -79,7 +84,7 @@ def layers(cols):
             ("all but the lowest half d_N", 0.5, np.inf),
             ("core, 1 d_N from every wall", 1.0, top - 1.0),
             ("whole specimen", -np.inf, np.inf)]
-    side = np.ones(len(z), dtype=bool)
+    side = np.ones(len(r), dtype=bool)
     for c in (cols["x"], cols["y"]):
         lo_w, hi_w = (c - r).min(), (c + r).max()
         side &= (c - lo_w >= dn) & (hi_w - c >= dn)
@@ -100,12 +105,7 @@ def slices(cols, n):
     """Rows (lo, hi, grains, mass %, primary %, d_mean/d_N, fines % of the
     specimen's fines mass, primary % of the slice's fines mass), heights in
     d_N from the floor, n slices of equal height."""
-    z, r, m = cols["z"], cols["radius"], cols["mass"]
-    primary = cols["c_pf[2]"] > 0.5
-    dn = 2.0 * r.max()
-    floor = (z - r).min()
-    h = (z - floor) / dn
-    top = ((z + r).max() - floor) / dn
+    r, m, primary, dn, h, top = heights(cols)
     d = 2.0 * r
     order = np.argsort(d)
     cum = np.cumsum(m[order]) / m.sum()
