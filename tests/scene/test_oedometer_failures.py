@@ -42,7 +42,13 @@ a run that goes on and prints numbers):
    (intervals_from), with the packer's warning and no ERROR; the same run
    sets its contacts by the stiffness number (kappa 2000): K_n = K_t =
    2000 stress d_N, as its STIFFNESS line prints;
-10. the `error` command itself: the message with its ${variables}
+10. a stress too low to come to rest within t_max: quartz (hertz 1) at
+   1 kPa on side 3.3 is still settling at the default t_max 0.3 s (the
+   servo's lid speed and the kinetic-energy limit shrink with the stress):
+   the run ends with a STOP that says "not at rest" and a WARNING naming
+   t_max as the setting to raise, never with "at rest" (with t_max 1.5 s it
+   comes to rest after 0.74 s, 114,000 steps);
+11. the `error` command itself: the message with its ${variables}
    substituted, exit status 1, and a usage message when it has none.
 """
 import os
@@ -136,6 +142,18 @@ def main():
               m is not None and dn is not None and m.group(1) == m.group(2)
               and abs(float(m.group(1)) / (2000 * 1e5 * float(dn.group(1))) - 1) < 1e-5
               and abs(float(m.group(3)) - 2000) < 1e-6, res.text[-1500:])
+
+    out = os.path.join(args.work, "stress_too_low")
+    res = su.run_launcher(args, scene, variables={
+        "out": out, "side": 3.3, "hertz": 1, "stress": "1e3"},
+        log=out + ".log", cwd=args.source, timeout=900)
+    warnings = [l for l in res.text.splitlines() if l.startswith("WARNING: not at rest")]
+    chk.check("a stress too low for t_max: exit %s, STOP not at rest at t_max 0.3 s, a WARNING "
+              "naming t_max and the stress, never 'at rest'" % res.returncode,
+              res.returncode == 0 and "STOP: maximum time 0.3 s reached" in res.text
+              and "STOP: at rest" not in res.text and len(set(warnings)) == 1
+              and "raise t_max" in warnings[0] and "stress 1e3 Pa" in warnings[0],
+              warnings or res.describe())
 
     inp = su.write_file(os.path.join(args.work, "in.error"), ERROR_SCRIPT)
     res = su.run_launcher(args, inp, timeout=60)
