@@ -344,28 +344,35 @@ def main():
     plot_model(read_rows(csv_path), os.path.join(a.out, "model.png"))
 
 
+def run_table(a, table, csv_path, rundir_root, base):
+    """Run the variants of table that have no row in csv_path yet (--only
+    narrows them), --jobs at a time, each row written as it comes."""
+    rows = read_rows(csv_path)
+    done = {r["name"] for r in rows}
+    todo = [v for v in table if v[0] not in done and (not a.only or v[0] in a.only)]
+    if a.plot_only or not todo:
+        return
+    print("%d runs to do (%d done), %d at a time" % (len(todo), len(done), a.jobs), flush=True)
+
+    def one(v):
+        print("start %s" % v[0], flush=True)
+        row = run_variant(v, rundir_root, base)
+        if row:
+            print("%-14s %-16s %-12s %7s s  %s steps  primary %6s %%  loose %6s %%  at rest %s" % (
+                row["name"], row["factor"], row["value"], row["wall_s"], row["steps"],
+                row["primary_mass_pct"], row["loose_number_pct"], row["at_rest"]), flush=True)
+        return row
+
+    oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, [v[0] for v in table])
+
+
 def converged(a):
     """The chart (or the model choices) at the converged setting: one run at a
     time unless --jobs."""
     model = a.set == "model55"
     table = MODEL55_VARIANTS if model else CONVERGED_VARIANTS
     csv_path = os.path.join(a.out, "model_side5.5.csv" if model else "chart_side5.5.csv")
-    rows = read_rows(csv_path)
-    done = {r["name"] for r in rows}
-    todo = [v for v in table if v[0] not in done and (not a.only or v[0] in a.only)]
-    if not a.plot_only and todo:
-        print("%d runs to do (%d done), %d at a time" % (len(todo), len(done), a.jobs), flush=True)
-
-        def one(v):
-            print("start %s" % v[0], flush=True)
-            row = run_variant(v, os.path.join(a.runs, "side5.5"), CONVERGED_BASE)
-            if row:
-                print("%-14s %-16s %-12s %7s s  %s steps  primary %6s %%  loose %6s %%  at rest %s" % (
-                    row["name"], row["factor"], row["value"], row["wall_s"], row["steps"],
-                    row["primary_mass_pct"], row["loose_number_pct"], row["at_rest"]), flush=True)
-            return row
-
-        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, [v[0] for v in table])
+    run_table(a, table, csv_path, os.path.join(a.runs, "side5.5"), CONVERGED_BASE)
     if model:
         # the default and its seeds: the converged chart's runs
         chart = [r for r in read_rows(os.path.join(a.out, "chart_side5.5.csv"))
@@ -390,22 +397,7 @@ def quartz(a):
              "dt_0.2", "ke_1e-4", "side_8.8"] + [v[0] for v in QUARTZ_MODEL_VARIANTS]
     table.sort(key=lambda v: first.index(v[0]) if v[0] in first else len(first))
     csv_path = os.path.join(a.out, "chart_quartz_side7.7.csv")
-    rows = read_rows(csv_path)
-    done = {r["name"] for r in rows}
-    todo = [v for v in table if v[0] not in done and (not a.only or v[0] in a.only)]
-    if not a.plot_only and todo:
-        print("%d runs to do (%d done), %d at a time" % (len(todo), len(done), a.jobs), flush=True)
-
-        def one(v):
-            print("start %s" % v[0], flush=True)
-            row = run_variant(v, os.path.join(a.runs, "quartz"), QUARTZ_BASE)
-            if row:
-                print("%-14s %-16s %-12s %7s s  %s steps  primary %6s %%  loose %6s %%  at rest %s" % (
-                    row["name"], row["factor"], row["value"], row["wall_s"], row["steps"],
-                    row["primary_mass_pct"], row["loose_number_pct"], row["at_rest"]), flush=True)
-            return row
-
-        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, [v[0] for v in table])
+    run_table(a, table, csv_path, os.path.join(a.runs, "quartz"), QUARTZ_BASE)
     rows = read_rows(csv_path)
     plot(rows, os.path.join(a.out, "chart_quartz_side7.7.png"), QUARTZ_VARIANTS,
          "Oedometer, Hertz-Mindlin quartz at 100 kPa (Cu 2.5 DA, side 7.7, 53,237 grains):\n"
