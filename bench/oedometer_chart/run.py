@@ -172,7 +172,7 @@ QUARTZ_MODEL_VARIANTS = [
     ("eta_0.5",       "rolling eta", "0.5",  {"eta": "0.5"},          1, False),
     ("mu_0.2",        "sliding mu",  "0.2",  {"mu": "0.2"},           1, False),
     # (mu 0.8, like 0.6, throws grains out of the container within 4,000
-    # steps with Hertz quartz: README.md)
+    # steps with Hertz quartz at dtfac 0.4: README.md)
     ("mu_wall_0",     "wall friction", "0",  {"mu_wall": "0"},        1, False),
     ("zeta_0.3",      "damping ratio", "0.3", {"zeta": "0.3"},        1, False),
 ]
