@@ -4,7 +4,8 @@ number of oedometer studies run at several stresses (tools/oedometer_study.py
 with --var hertz=1 stress=S, one study folder per stress).
 
     /usr/bin/python3 tools/stress_curve.py 1e4=out/stress_hz/s1e4 1e5=out/stress_hz/s1e5 ... \\
-        [--linear CSV ... --kappa 1963] [--youngs 70e9 --poisson 0.25] [--soils cu2.0 ...] [--out DIR]
+        [--linear CSV ... --kappa 1963] [--runs stress_runs.csv ...]
+        [--youngs 70e9 --poisson 0.25] [--soils cu2.0 ...] [--out DIR]
 
 Each STRESS=DIR names the target stress (Pa) of the study in DIR (its
 study.csv); a row whose measured lid stress is more than 5 % off the stress
@@ -12,8 +13,11 @@ given is refused (a folder given the wrong stress). --linear adds the rows
 of a study with linear springs at the stiffness number --kappa, drawn at
 the stress where Hertz contacts of the material (--youngs, --poisson; quartz
 by default) have that secant stiffness number, (2 Y*/(3 sigma))^(2/3) =
-kappa (docs/method.md): the stress those springs stand for. Writes into
-OUT (default out/stress_curve):
+kappa (docs/method.md): the stress those springs stand for. --runs adds
+the rows of an earlier stress_runs.csv as they are (runs whose folders are
+gone: a curve is extended by new studies without running the old ones
+again). A run given twice (same source, stress, rule, soil and seed) is
+refused. Writes into OUT (default out/stress_curve):
 
   stress_runs.csv   one row per run: stress, rule, soil, seed, at rest,
                     lid stress, primary % by mass, loose % by number, steps
@@ -76,7 +80,7 @@ def summarise(rows, youngs, poisson):
     return out
 
 
-def plot(summary, path, kappa):
+def plot(summary, path):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.3))
     keys = sorted({(s["rule"], s["soil"]) for s in summary})
     for ax, what, label in ((axes[0], "primary", "primary fabric, % of the mass"),
@@ -96,7 +100,8 @@ def plot(summary, path, kappa):
                 err = np.array([[s[what + "_mean"] - s[what + "_min"] for s in sel],
                                 [s[what + "_max"] - s[what + "_mean"] for s in sel]])
                 lab = tag + (", Hertz quartz" if source == "hertz"
-                             else ", linear kappa %g (at the stress where quartz has it)" % kappa)
+                             else ", linear kappa %.0f (at the stress where quartz has it)"
+                             % sel[0]["kappa"])
                 ax.errorbar(x, y, yerr=err, fmt=style, color=col, capsize=3, label=lab,
                             mfc="none" if source == "linear" else col, ms=7)
         ax.set_xscale("log")
@@ -112,7 +117,9 @@ def plot(summary, path, kappa):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("studies", nargs="+", metavar="STRESS=DIR")
+    ap.add_argument("studies", nargs="*", metavar="STRESS=DIR")
+    ap.add_argument("--runs", nargs="*", default=[], metavar="CSV",
+                    help="rows of an earlier stress_runs.csv, taken as they are")
     ap.add_argument("--linear", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--kappa", type=float)
     ap.add_argument("--youngs", type=float, default=70e9)
@@ -135,6 +142,22 @@ def main():
         rows += read_study(path, s, "hertz")
     for path in a.linear:
         rows += read_study(path, stress_of_kappa(a.kappa, a.youngs, a.poisson), "linear")
+    for path in a.runs:
+        if not os.path.isfile(path):
+            sys.exit("stress_curve: --runs %s: no such file" % path)
+        for r in csv.DictReader(open(path)):
+            rows.append({"stress": float(r["stress"]), "source": r["source"], "rule": r["rule"],
+                         "soil": r["soil"], "seed": r["seed"], "at_rest": r["at_rest"],
+                         "lid_stress_Pa": float(r["lid_stress_Pa"]),
+                         "primary": float(r["primary"]), "loose": float(r["loose"]),
+                         "steps": int(r["steps"])})
+    seen = {}
+    for r in rows:
+        key = (r["source"], "%.6g" % r["stress"], r["rule"], r["soil"], r["seed"])
+        if key in seen:
+            sys.exit("stress_curve: the run %s (source, stress, rule, soil, seed) is given twice"
+                     % (key,))
+        seen[key] = True
     if a.soils:
         rows = [r for r in rows if r["soil"] in a.soils]
     if not rows:
@@ -150,7 +173,7 @@ def main():
         w.writeheader()
         for s in summary:
             w.writerow({k: ("%.6g" % v if isinstance(v, float) else v) for k, v in s.items()})
-    plot(summary, os.path.join(a.out, "stress_curve.png"), a.kappa)
+    plot(summary, os.path.join(a.out, "stress_curve.png"))
     print("%-7s %-9s %-6s %10s %8s %6s %22s %22s" % ("source", "rule", "soil", "stress_kPa",
                                                      "kappa", "seeds", "primary % (range)",
                                                      "loose % (range)"))

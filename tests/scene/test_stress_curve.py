@@ -8,7 +8,10 @@ simulation), against numbers worked out by hand:
 2. --linear rows at --kappa 1963 are drawn at the stress where quartz has
    that stiffness number, 2 Y*/(3 kappa^1.5) = 286.2 kPa;
 3. a study folder given the wrong stress (its lid stress more than 5 % off)
-   is refused with a message naming it, as is STRESS=DIR without a number.
+   is refused with a message naming it, as is STRESS=DIR without a number;
+4. --runs extends a curve from its kept stress_runs.csv: with a new study at
+   300 kPa the earlier rows come back unchanged beside the new ones, and a
+   run given twice (the kept file and its study again) is refused.
 """
 import csv
 import os
@@ -65,6 +68,25 @@ def main():
     chk.check("kappa 1963 drawn at 286.2 kPa (%s)" % lin_rows,
               len(lin_rows) == 1 and abs(lin_rows[0][1] - 286.2e3) < 100)
     chk.check("the figure written", os.path.isfile(os.path.join(out, "stress_curve.png")))
+    c = study(os.path.join(args.work, "s3e5"), [
+        "LA_cu2.5_side7.7_seed1,layerwise,cu2.5,7.7,1,1,1,1000,yes,300500,55.0,64.0"])
+    out2 = os.path.join(args.work, "out2")
+    p = subprocess.run(["/usr/bin/python3", tool, "3e5=" + c, "--runs",
+                        os.path.join(out, "stress_runs.csv"), "--out", out2],
+                       capture_output=True, text=True, timeout=120)
+    rows2 = list(csv.DictReader(open(os.path.join(out2, "stress_curve.csv")))) \
+        if p.returncode == 0 else []
+    keep = lambda rs: sorted(tuple(sorted(r.items())) for r in rs)
+    chk.check("--runs: the kept rows come back unchanged beside the new study (%d rows, %s)"
+              % (len(rows2), p.stderr.strip()[-200:]),
+              p.returncode == 0 and len(rows2) == len(rows) + 1
+              and keep(r for r in rows2 if r["soil"] == "cu2.0") == keep(rows)
+              and any(r["soil"] == "cu2.5" and r["primary_mean"] == "55" for r in rows2))
+    p = subprocess.run(["/usr/bin/python3", tool, "1e5=" + a, "--runs",
+                        os.path.join(out, "stress_runs.csv"), "--out", out2],
+                       capture_output=True, text=True, timeout=120)
+    chk.check("--runs: a run given twice is refused (%s)" % p.stderr.strip()[:200],
+              p.returncode != 0 and "is given twice" in p.stderr)
     p = subprocess.run(["/usr/bin/python3", tool, "1e6=" + a, "--out", out],
                        capture_output=True, text=True, timeout=120)
     chk.check("a folder given the wrong stress is refused, naming it (%s)" % p.stderr.strip()[:200],
