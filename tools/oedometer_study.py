@@ -3,7 +3,7 @@
 2.5, 3.0, 3.5 at porosity 0.35 in the zero-gravity oedometer, with seeds.
 
     /usr/bin/python3 tools/oedometer_study.py [--small | --trend | --convergence]
-        [--sides 5.5] [--seeds 1 2 3] [--soils cu2.0 ...] [--rules discrete layerwise]
+        [--sides 7.7] [--seeds 1 2 3] [--soils cu2.0 ...] [--rules discrete layerwise]
         [--ranks 1] [--var NAME=VALUE ...] [--jobs 2] [--out out/study]
 
 One run of input_scripts/in.oedometer per (rule, soil, side, seed), one run
@@ -13,9 +13,10 @@ tools/oedometer_runs.py). Resumable: a run whose name is in the CSV is not
 run again. Progress: one line per finished run, with the count and the
 elapsed time.
 
-  (default)      the full matrix: 2 rules x 4 soils x seeds 1-3, side 5.5
-                 (19,402 grains of Cu 2.5; 158,287 of Cu 3.5: hours per run
-                 on one core, see docs/validation.md, Cost)
+  (default)      the full matrix: 2 rules x 4 soils x seeds 1-3 at the
+                 scene's defaults (Hertz quartz, 100 kPa, side 7.7: 53,237
+                 grains of Cu 2.5, 163,210 of Cu 3.0; an hour or more per
+                 Cu 3.5 run on two ranks, see docs/validation.md, Cost)
   --small        a quick look: both rules x Cu 2.0 and 2.5, seed 1, side 3.3
                  (1,100-4,200 grains, about 3 minutes on 2 cores; the test
                  tests/scene/test_study_small.py checks its findings)
@@ -31,7 +32,7 @@ elapsed time.
   --ranks N      run each scene on N MPI ranks (names get a _ranksN suffix):
                  the rank-count check, e.g. --rules discrete --soils cu2.5
                  --sides 3.3 --seeds 1 --ranks 4, or a large soil on both
-                 cores (Cu 3.5 at side 5.5: --ranks 2 --jobs 1); the summary
+                 cores (Cu 3.5 at side 7.7: --ranks 2 --jobs 1); the summary
                  keeps each rank count a series of its own
 
 At the end it prints, per (rule, soil, side), the mean and the range over
@@ -85,7 +86,7 @@ def main():
     elif a.convergence:
         rules, soils, sides, seeds = ["discrete"], ["cu2.5"], ["3.3", "4.4", "5.5"], ["1", "2", "3"]
     else:
-        rules, soils, sides, seeds = ARRANGEMENTS, SOILS, ["5.5"], ["1", "2", "3"]
+        rules, soils, sides, seeds = ARRANGEMENTS, SOILS, ["7.7"], ["1", "2", "3"]
     rules, soils = a.rules or rules, a.soils or soils
     sides, seeds = a.sides or sides, a.seeds or seeds
     for s in soils:

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Scene test: the oedometer scene end to end, on a specimen of 2,420 grains
 (Cu = 2.5, discrete arrangement, porosity 0.35: the scene's defaults, except
-side 2.75, which still holds the coarsest interval's grains; at rest after
-60,000 steps, half a minute).
+side 2.75, which still holds the coarsest interval's grains, and linear
+springs of kn 2e7 N/m, whose wall forces the recount below forms in closed
+form; at rest after 60,000 steps, half a minute).
 
 1. The run ends at rest (the stop rule's three conditions: kinetic energy,
    lid stress over the whole last block, steady primary fraction), with the
@@ -119,7 +120,7 @@ def main():
     check_scene_positions(args, chk)
     out = os.path.join(args.work, "run")
     res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
-                          variables={"out": out, "every": 2000, "side": 2.75},
+                          variables={"out": out, "every": 2000, "side": 2.75, "kn": KN},
                           log=os.path.join(args.work, "oedometer.log"),
                           cwd=args.source, timeout=900)
     if not chk.check("the oedometer scene runs (%.0f s)" % res.seconds,

@@ -3,6 +3,11 @@
 that names the value and what is allowed, and a non-zero exit status (never
 a run that goes on and prints numbers):
 
+The cases about linear springs (the stress 1e9 Pa at kn, the dashpots, the
+swing, the overlap during the run, the grains thrown out) run with the kn
+2e7 N/m they were measured with; the others with the scene's default, Hertz
+quartz.
+
 1. a time step at or above the critical one (dtfac 1.2): stopped before the
    first step, naming dt, the critical step and dtfac;
 2. a lid that could cross half the neighbour skin in one step (vmax 100 m/s):
@@ -12,9 +17,10 @@ a run that goes on and prints numbers):
    estimated overlap and overlap_max;
 4. a container too small for the coarsest interval (side 1.8 coarsest
    diameters: 0.36 grains, rounded to none): stopped before packing;
-5. a value of the `hertz` switch other than 0 or 1, a negative stiffness
-   number `kappa`, a stiffness number given with Hertz contacts (whose
-   stiffness comes from the material), and a Hertz damping ratio LIGGGHTS
+5. a value of the `hertz` switch other than 1, 0 or -1, a negative stiffness
+   number `kappa`, a stiffness number or a `kn` given with Hertz contacts
+   (whose stiffness comes from the material), linear springs (hertz 0)
+   without a stiffness or with two (kn and kappa), and a Hertz damping ratio LIGGGHTS
    cannot set (its restitution coefficient must exceed 0.05): stopped before
    packing; a stress of 1e9 Pa on quartz Hertz contacts: stopped before the
    first step, naming youngs as the setting to raise;
@@ -61,25 +67,31 @@ CASES = [
      ["the time step", "is not below the critical step", "dtfac 1.2 must be below 1"]),
     ("lid too fast for the neighbour skin", {"vmax": 100},
      ["the lid may move", "more than half the neighbour skin 5e-5 m", "lower vmax or raise skin"]),
-    ("target stress the contacts cannot carry", {"stress": "1e9"},
+    ("target stress the contacts cannot carry", {"kn": "2e7", "stress": "1e9"},
      ["the target stress 1e9 Pa", "above overlap_max 0.05", "lower stress or raise kn"]),
     ("a container too small for the coarsest interval", {"side": 1.8},
      ["side 1.8 holds", "grains of the coarsest interval", "it would be empty; use side 2.00"]),
-    ("overlap beyond the limit during the run", {"overlap_max": "2e-4"},
+    ("overlap beyond the limit during the run", {"kn": "2e7", "overlap_max": "2e-4"},
      ["two grains overlap by", "of the smallest radius", "above overlap_max 2e-4"]),
     ("a contact law the scene does not have", {"hertz": 2},
-     ["hertz 2: use 0 (linear springs, the default) or 1 (Hertz-Mindlin"]),
+     ["hertz 2: use 1 (Hertz-Mindlin", "0 (linear springs of kn or kappa) or -1"]),
+    ("a linear stiffness with Hertz contacts", {"hertz": 1, "kn": "2e7"},
+     ["kn 2e7, kt 0 N/m set linear springs", "leave kn, kt 0, or use hertz 0"]),
+    ("linear springs without a stiffness", {"hertz": 0},
+     ["hertz 0 (linear springs) needs a stiffness: kn (N/m) or kappa"]),
+    ("two stiffnesses for the linear springs", {"kn": "2e7", "kappa": 1963},
+     ["kn 2e7 N/m and kappa 1963: give one stiffness of the linear springs, not both"]),
     ("a stiffness number with Hertz contacts", {"hertz": 1, "kappa": 1963},
      ["kappa 1963 sets linear springs", "leave kappa 0"]),
     ("Hertz damping beyond LIGGGHTS' restitution range", {"hertz": 1, "zeta": 0.7},
      ["zeta 0.7:", "restitution coefficient above 0.05", "below 0.63"]),
-    ("a servo that swings with grains too heavy", {"mass_scale": "1e6", "t_max": 0.1},
+    ("a servo that swings with grains too heavy", {"kn": "2e7", "mass_scale": "1e6", "t_max": 0.1},
      ["the lid stress swings about the target", "lower kp (0.2) or vmax (0.01), or bring mass_scale (1e6) nearer the default 1e4"]),
     ("a stress quartz grains cannot carry as small overlaps", {"hertz": 1, "stress": "1e9"},
      ["the target stress 1e9 Pa", "above overlap_max 0.05", "lower stress or raise youngs"]),
     ("a negative stiffness number", {"kappa": -1},
      ["kappa -1: use 0 (K_n, K_t from kn, kt) or a positive stiffness number"]),
-    ("contact dashpots too strong for the time step", {"zeta": 2},
+    ("contact dashpots too strong for the time step", {"kn": "2e7", "zeta": 2},
      ["the contact damping G_n", "at or above 0.5", "lower zeta (2;", "or dtfac (0.4)"]),
 ]
 
@@ -115,7 +127,7 @@ def main():
     su.write_file(kicked, text.replace(marker, "velocity all set 0 0 -50\n" + marker, 1))
     out = os.path.join(args.work, "grains_leave")
     res = su.run_launcher(args, kicked, variables={
-        "out": out, "t_max": 0.01, "side": 3.3, "overlap_max": "1e9",
+        "out": out, "t_max": 0.01, "side": 3.3, "overlap_max": "1e9", "kn": "2e7",
         "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")},
         log=out + ".log", cwd=args.source, timeout=600)
     errors = [l for l in res.text.splitlines() if l.startswith("ERROR")]
