@@ -150,6 +150,11 @@ def main():
     ap.add_argument("--launcher", default=os.path.join(ROOT, "build", "liggghts-fabric"))
     ap.add_argument("--dest", required=True)
     a = ap.parse_args()
+    # each run's compute works in a folder of its own: a relative path is the caller's
+    a.launcher = os.path.abspath(a.launcher)
+    if not os.access(a.launcher, os.X_OK):
+        sys.exit("constriction_verdict: --launcher %s: no such executable (build it with "
+                 "bash tools/build.sh)" % a.launcher)
     os.makedirs(a.dest, exist_ok=True)
     runs = sorted(os.listdir(os.path.join(a.study, "runs")))
     table = []

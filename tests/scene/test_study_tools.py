@@ -20,6 +20,8 @@ runs, which does not need a specimen at rest:
    row's; cut into equal slices (--slices, --csv) the slices hold every
    grain, all of the mass and all of the fines, and their primary shares
    weighted by mass give the CSV row's.
+4. tools/constriction_verdict.py gives a verdict row per run with the
+   launcher given by a path relative to the caller's folder.
 """
 import csv
 import os
@@ -190,6 +192,21 @@ def main():
                   ok and grains == int(row["grains"]) and abs(mass - 100) < 0.01
                   and abs(fines - 100) < 0.01 and abs(whole - float(row["primary_mass_pct"])) < 0.015,
                   p5.stdout[-1500:] + p5.stderr[-1500:])
+    # tools/constriction_verdict.py on the runs, the launcher given relative
+    # to the caller's folder (each run's compute works in a folder of its
+    # own, so the tool must resolve it first): a verdict row per run with the
+    # run's primary share.
+    rel = os.path.relpath(args.launcher, args.source)
+    dest = os.path.join(args.work, "verdict")
+    p8 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "constriction_verdict.py"),
+                         "--study", args.work, "--launcher", rel, "--dest", dest],
+                        cwd=args.source, capture_output=True, text=True, timeout=600)
+    vpath = os.path.join(dest, "verdict.csv")
+    vrows = list(csv.DictReader(open(vpath))) if os.path.exists(vpath) else []
+    chk.check("constriction_verdict with --launcher %s (relative): exit %d, a row per run (%d of %d)"
+              % (rel, p8.returncode, len(vrows), len(rows)),
+              p8.returncode == 0 and sorted(v["run"] for v in vrows) == sorted(r["name"] for r in rows),
+              p8.stdout[-1500:] + p8.stderr[-1500:])
     chk.finish()
 
 
