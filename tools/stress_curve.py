@@ -144,7 +144,9 @@ def main():
         rows += read_study(path, stress_of_kappa(a.kappa, a.youngs, a.poisson), "linear")
     for path in a.runs:
         if not os.path.isfile(path):
-            sys.exit("stress_curve: --runs %s: no such file" % path)
+            sys.exit("stress_curve: --runs %s: no such file%s" % (
+                path, " (give the STRESS=DIR studies before --runs, which takes every"
+                " name after it)" if "=" in path else ""))
         for r in csv.DictReader(open(path)):
             rows.append({"stress": float(r["stress"]), "source": r["source"], "rule": r["rule"],
                          "soil": r["soil"], "seed": r["seed"], "at_rest": r["at_rest"],

@@ -10,8 +10,10 @@ simulation), against numbers worked out by hand:
 3. a study folder given the wrong stress (its lid stress more than 5 % off)
    is refused with a message naming it, as is STRESS=DIR without a number;
 4. --runs extends a curve from its kept stress_runs.csv: with a new study at
-   300 kPa the earlier rows come back unchanged beside the new ones, and a
-   run given twice (the kept file and its study again) is refused.
+   300 kPa the earlier rows come back unchanged beside the new ones, a run
+   given twice (the kept file and its study again) is refused, and a
+   STRESS=DIR given after --runs (which takes every name after it) is
+   refused with a message saying so.
 """
 import csv
 import os
@@ -87,6 +89,11 @@ def main():
                        capture_output=True, text=True, timeout=120)
     chk.check("--runs: a run given twice is refused (%s)" % p.stderr.strip()[:200],
               p.returncode != 0 and "is given twice" in p.stderr)
+    p = subprocess.run(["/usr/bin/python3", tool, "--runs", os.path.join(out, "stress_runs.csv"),
+                        "3e5=" + c, "--out", out2], capture_output=True, text=True, timeout=120)
+    chk.check("--runs before a STRESS=DIR: refused, saying to give the studies first (%s)"
+              % p.stderr.strip()[:200],
+              p.returncode != 0 and "before --runs" in p.stderr)
     p = subprocess.run(["/usr/bin/python3", tool, "1e6=" + a, "--out", out],
                        capture_output=True, text=True, timeout=120)
     chk.check("a folder given the wrong stress is refused, naming it (%s)" % p.stderr.strip()[:200],
