@@ -19,8 +19,9 @@ quartz.
    diameters: 0.36 grains, rounded to none): stopped before packing;
 5. a value of the `hertz` switch other than 1, 0 or -1, a negative stiffness
    number `kappa`, a stiffness number or a `kn` given with Hertz contacts
-   (whose stiffness comes from the material), linear springs (hertz 0)
-   without a stiffness or with two (kn and kappa), and a Hertz damping ratio LIGGGHTS
+   (whose stiffness comes from the material), linear springs (hertz 0, or
+   kt alone, which asks for them) without a normal stiffness or with two
+   (kn and kappa), and a Hertz damping ratio LIGGGHTS
    cannot set (its restitution coefficient must exceed 0.05): stopped before
    packing; a stress of 1e9 Pa on quartz Hertz contacts: stopped before the
    first step, naming youngs as the setting to raise;
@@ -78,6 +79,8 @@ CASES = [
     ("a linear stiffness with Hertz contacts", {"hertz": 1, "kn": "2e7"},
      ["kn 2e7, kt 0 N/m set linear springs", "leave kn, kt 0, or use hertz 0"]),
     ("linear springs without a stiffness", {"hertz": 0},
+     ["hertz 0 (linear springs) needs a stiffness: kn (N/m) or kappa"]),
+    ("a tangential spring alone", {"kt": "1e7"},
      ["hertz 0 (linear springs) needs a stiffness: kn (N/m) or kappa"]),
     ("two stiffnesses for the linear springs", {"kn": "2e7", "kappa": 1963},
      ["kn 2e7 N/m and kappa 1963: give one stiffness of the linear springs, not both"]),
