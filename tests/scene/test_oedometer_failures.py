@@ -94,6 +94,8 @@ CASES = [
      ["the target stress 1e9 Pa", "above overlap_max 0.05", "lower stress or raise youngs"]),
     ("a negative stress ramp", {"ramp": -1},
      ["ramp -1: use a loading time in s over which the target stress rises, or 0"]),
+    ("a ramp as long as the run", {"ramp": 0.3},
+     ["ramp 0.3 s is not shorter than t_max 0.01 s", "shorten ramp or raise t_max"]),
     ("a negative stiffness number", {"kappa": -1},
      ["kappa -1: use 0 (K_n, K_t from kn, kt) or a positive stiffness number"]),
     ("contact dashpots too strong for the time step", {"kn": "2e7", "zeta": 2},
