@@ -153,6 +153,11 @@ def main():
     chk.check("an interval left empty by the packer: classified anyway (exit %s, no ERROR, FABRIC line)"
               % res.returncode, res.returncode == 0 and not res.errors() and "FABRIC:" in res.text
               and "particles not placed" in res.text, res.describe())
+    stop = [l for l in res.text.splitlines() if l.startswith("STOP:")]
+    chk.check("stopped by t_max before the third block: the STOP line says the steadiness is not "
+              "known yet, never a change of the primary fabric against the start values",
+              len(set(stop)) == 1 and "steadiness not known yet" in stop[0] and "moved" not in stop[0],
+              stop or res.describe())
     m = re.search(r"^STIFFNESS: K_n (\S+) N/m, K_t (\S+) N/m; stiffness number "
                   r"K_n / \(stress d_N\) = (\S+) ", res.text, re.M)
     dn = re.search(r"^psd_info .*d_N = (\S+) ", res.text, re.M)   # 6 digits
@@ -173,6 +178,11 @@ def main():
               and "STOP: at rest" not in res.text and len(set(warnings)) == 1
               and "raise t_max" in warnings[0] and "stress 1e3 Pa" in warnings[0],
               warnings or res.describe())
+    moved = re.search(r"^STOP: maximum time .* primary fabric moved (\S+) points over the last "
+                      r"two blocks", res.text, re.M)
+    chk.check("stopped by t_max after many blocks: the STOP line gives the primary fabric's "
+              "change over the last two blocks (%s points, at most 200)" % (moved and moved.group(1)),
+              moved is not None and 0 <= float(moved.group(1)) <= 200, res.text[-1500:])
 
     inp = su.write_file(os.path.join(args.work, "in.error"), ERROR_SCRIPT)
     res = su.run_launcher(args, inp, timeout=60)
