@@ -255,19 +255,32 @@ std::pair<std::vector<Fraction>, int> recount_until_stable(
   }
 }
 
+// A random contact network of n grains: 2n draws of a grain pair (self pairs
+// skipped) and n/3 wall contacts, forces uniform in [-0.2, 1) (some
+// attractive, some below the tests' threshold 0.1).
+struct Network {
+  std::vector<ParticleContact> contacts;
+  std::vector<WallContact> walls;
+};
+
+Network random_network(std::mt19937& rng, int n) {
+  std::uniform_int_distribution<int> pick(0, n - 1);
+  std::uniform_real_distribution<double> force(-0.2, 1.0);
+  Network net;
+  for (int k = 0; k < 2 * n; ++k) {
+    const int i = pick(rng), j = pick(rng);
+    if (i != j) net.contacts.push_back(contact(i, j, force(rng)));
+  }
+  for (int k = 0; k < n / 3; ++k)
+    net.walls.push_back(wall(pick(rng), force(rng)));
+  return net;
+}
+
 TEST(Pruning, IterateAgreesWithANaiveRecountOnRandomNetworks) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 50; ++trial) {
     const int n = 2 + static_cast<int>(rng() % 60);
-    std::uniform_int_distribution<int> pick(0, n - 1);
-    std::uniform_real_distribution<double> force(-0.2, 1.0);
-    std::vector<ParticleContact> contacts;
-    for (int k = 0; k < 2 * n; ++k) {
-      const int i = pick(rng), j = pick(rng);
-      if (i != j) contacts.push_back(contact(i, j, force(rng)));
-    }
-    std::vector<WallContact> walls;
-    for (int k = 0; k < n / 3; ++k) walls.push_back(wall(pick(rng), force(rng)));
+    const auto [contacts, walls] = random_network(rng, n);
     const auto [expected, passes] =
         recount_until_stable(n, contacts, walls, 0.1, 3);
     Classification c =
@@ -956,15 +969,7 @@ TEST(PruningAcrossRanks, OneLoopGivesTheOneRankResultOnAnyNumberOfRanks) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 30; ++trial) {
     const int n = 3 + static_cast<int>(rng() % 50);
-    std::uniform_int_distribution<int> pick(0, n - 1);
-    std::uniform_real_distribution<double> force(-0.2, 1.0);
-    std::vector<ParticleContact> contacts;
-    for (int k = 0; k < 2 * n; ++k) {
-      const int i = pick(rng), j = pick(rng);
-      if (i != j) contacts.push_back(contact(i, j, force(rng)));
-    }
-    std::vector<WallContact> walls;
-    for (int k = 0; k < n / 3; ++k) walls.push_back(wall(pick(rng), force(rng)));
+    const auto [contacts, walls] = random_network(rng, n);
     Options o = with(LoadThreshold::absolute(0.1), Pruning::iterate);
     o.max_iterations = 1 + trial % 4;  // sometimes stops early
     const Classification one = classify(n, contacts, walls, 0.1, o);
