@@ -11,7 +11,7 @@ fabric_series.txt, fabric_intervals.txt: the figures); several --study
 folders are read together (runs of one matrix made by several calls of the
 driver; a run name found twice is an error). Writes into OUT:
 
-  study.csv          the rows used (rank count 1 at the chosen side), as read
+  study.csv          the rows at the chosen side, as read
   tables.md          per model (rule x Cu): seeds, primary % by mass and
                      loose % by number (mean and range over the seeds), the
                      OZ as Table 2 gives it (r1, r2 in mm, OZ %), the
@@ -372,7 +372,14 @@ def main():
     def rundir(name):
         return os.path.join(home[name], "runs", name)
     ranks_rows = [r for r in rows if r["side"] == a.side]
-    rows = [r for r in ranks_rows if r.get("ranks", "1") in ("", "1")]
+    # each seed once: its run on the fewest ranks (a seed run on 2 ranks only
+    # counts as that seed); its runs on more ranks go to the rank-count table
+    fewest = {}
+    for r in ranks_rows:
+        base = r["name"].split("_ranks")[0]
+        if base not in fewest or int(r.get("ranks") or 1) < int(fewest[base].get("ranks") or 1):
+            fewest[base] = r
+    rows = [r for r in ranks_rows if fewest[r["name"].split("_ranks")[0]] is r]
     if not rows:
         sys.stderr.write("no run at side %s in %s\n"
                          % (a.side, ", ".join(os.path.join(d, "study.csv") for d in a.study)))
@@ -414,7 +421,8 @@ def main():
         w.writerows(sorted(ranks_rows, key=lambda r: r["name"]))
     write_intervals(os.path.join(a.out, "intervals.csv"), tables)
 
-    lines = ["Side %s coarsest diameters, 1 MPI rank; mean (range) over the seeds.\n" % a.side,
+    lines = ["Side %s coarsest diameters, each seed on the fewest MPI ranks it ran on; "
+             "mean (range) over the seeds.\n" % a.side,
              "| model | grains | seeds (at rest) | loose % before loading | primary % by mass "
              "| loose % by number | a_c | a_n | wall s |",
              "|---|---|---|---|---|---|---|---|---|"]
@@ -448,14 +456,15 @@ def main():
                              fmt(s["oz_mass_pct"]), poz, fmt(s["oz_tolerant_mass_pct"])))
     lines += table2
     lines += cu_step_split(rows, tables)
-    multi = [x for x in ranks_rows if x.get("ranks", "1") not in ("", "1")]
+    multi = [x for x in ranks_rows if x not in rows]
     if multi:
         lines += ["", "Rank count (the same model and seed on more MPI ranks):\n",
                   "| run | ranks | primary % by mass | loose % by number | OZ % | wall s |",
                   "|---|---|---|---|---|---|"]
         shown = set()
         for x in sorted(multi, key=lambda r: (r["name"].split("_ranks")[0], int(r["ranks"]))):
-            base = [y for y in rows if y["name"] == x["name"].split("_ranks")[0]
+            base = [y for y in rows
+                    if y["name"].split("_ranks")[0] == x["name"].split("_ranks")[0]
                     and y["name"] not in shown]
             shown.update(y["name"] for y in base)
             for y in base + [x]:

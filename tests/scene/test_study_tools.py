@@ -143,6 +143,45 @@ def main():
     chk.check("validation_report --study with a run in two folders: exit 2 naming it (%s)"
               % p7.stderr.strip()[:200],
               p7.returncode == 2 and "in both" in p7.stderr)
+    # Rank counts: a seed run on 2 ranks only is that seed in the tables; a
+    # seed run on 1 and on 2 ranks is counted once (its 1-rank run) and its
+    # 2-rank run goes to the rank-count table. The 2-rank rows are made from
+    # the DA rows (their folders linked), with primary % of their own.
+    mixed = os.path.join(args.work, "mixed")
+    os.makedirs(os.path.join(mixed, "runs"), exist_ok=True)
+    da = {r["soil"]: r for r in rows if r["rule"] == "discrete"}
+    new_seed = dict(da["cu2.0"], name=da["cu2.0"]["name"].replace("seed1", "seed2") + "_ranks2",
+                    seed="2", ranks="2", primary_mass_pct="%.2f" % (float(da["cu2.0"]["primary_mass_pct"]) + 10))
+    same_seed = dict(da["cu2.5"], name=da["cu2.5"]["name"] + "_ranks2", ranks="2",
+                     primary_mass_pct="%.2f" % (float(da["cu2.5"]["primary_mass_pct"]) + 10))
+    with open(os.path.join(mixed, "study.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(rows + [new_seed, same_seed])
+    for r, target in [(r, r["name"]) for r in rows] + [(new_seed, da["cu2.0"]["name"]),
+                                                        (same_seed, da["cu2.5"]["name"])]:
+        link = os.path.join(mixed, "runs", r["name"])
+        if not os.path.lexists(link):
+            os.symlink(os.path.join(args.work, "runs", target), link)
+    p8 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
+                         "--study", mixed, "--side", SIDE, "--out", os.path.join(args.work, "report4")],
+                        cwd=args.source, capture_output=True, text=True, timeout=300)
+    tables4 = (open(os.path.join(args.work, "report4", "tables.md")).read()
+               if p8.returncode == 0 else "")
+    first = tables4.split("\n\nTable 2")[0]
+    ranks_table = tables4.split("Rank count", 1)[1].split("\n\n", 2)[1] if "Rank count" in tables4 else ""
+    mean20 = 0.5 * (float(da["cu2.0"]["primary_mass_pct"]) + float(new_seed["primary_mass_pct"]))
+    one25 = float(da["cu2.5"]["primary_mass_pct"])
+    chk.check("validation_report, a seed on 2 ranks only: DA Cu 2.0 has 2 seeds, mean %.1f; "
+              "a seed on 1 and 2 ranks: DA Cu 2.5 1 seed (%.1f), its 2-rank run in the rank table"
+              % (mean20, one25),
+              re.search(r"\| DA Cu 2\.0 \| [0-9]+ \| 2 \(\d\) \| [^|]+ \| %.1f \(" % mean20, first)
+              is not None
+              and re.search(r"\| DA Cu 2\.5 \| [0-9]+ \| 1 \(\d\) \| [^|]+ \| %.1f \|" % one25, first)
+              is not None
+              and same_seed["primary_mass_pct"] in ranks_table
+              and new_seed["primary_mass_pct"] not in ranks_table,
+              p8.stderr[-1500:] + tables4[:3000])
     # tools/fabric_layers.py on every run: the layers from the floor to
     # the top hold every grain once and all of the mass, and the whole
     # specimen's primary share is the CSV row's.
