@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <random>
 
@@ -40,54 +42,110 @@ void touching_face(Rng& rng, double r1, double r2, double r3, Sphere* s) {
   s[2] = Sphere{*c3, r3};
 }
 
+// Whether a sphere of radius r4 touching the three exists, found without
+// the solver: the centres at r4 + r1 from c1 and r4 + r2 from c2 form a
+// circle; one touches the third sphere when r4 + r3 lies between the
+// circle's least and greatest distance from c3. 1 yes, 0 no, -1 within 1e-9
+// of either bound (not judged).
+int touching_sphere_exists(const Sphere* s, double r4) {
+  const double R1 = r4 + s[0].radius, R2 = r4 + s[1].radius, R3 = r4 + s[2].radius;
+  const Vec3 axis = s[1].centre - s[0].centre;
+  const double d = axis.norm();
+  const Vec3 u = axis / d;
+  const double a = (R1 * R1 - R2 * R2 + d * d) / (2.0 * d);
+  const double h2 = R1 * R1 - a * a;
+  if (h2 < -1e-9 * R1 * R1) return 0;
+  if (h2 <= 1e-9 * R1 * R1) return -1;
+  const double h = std::sqrt(h2);
+  const Vec3 v = s[2].centre - (s[0].centre + a * u);
+  const double along = v.dot(u), across = (v - along * u).norm();
+  const double lo = std::hypot(along, across - h), hi = std::hypot(along, across + h);
+  const double tol = 1e-9 * (R3 + hi);
+  if (R3 < lo - tol || R3 > hi + tol) return 0;
+  if (R3 > lo + tol && R3 < hi - tol) return 1;
+  return -1;
+}
+
+// A face whose third centre lies eps of the edge length off the line of the
+// other two: the solution's miss grows as 1/eps (rounding of the face plane's
+// normal); this bound holds down to eps 1e-6 (measured: up to 3.4e-16/eps).
+constexpr double kCollinearMiss = 1e-15;
+
 }  // namespace
 
 TEST(Trilateration, TouchesTheThreeSpheresForRandomFaces) {
   Rng rng;
-  int solved = 0, near_collinear = 0;
+  int solved = 0, near_collinear = 0, touching = 0, fall_through = 0;
+  double worst = 0.0;  // the largest miss over its tolerance
   for (int trial = 0; trial < 20000; ++trial) {
     Sphere s[3];
-    double r4;
+    double r4, tol = 1e-10;
     if (trial % 2 == 0) {  // touching faces, radius ratios up to 100
       touching_face(rng, rng.log_uniform(0.01, 1), rng.log_uniform(0.01, 1),
                     rng.log_uniform(0.01, 1), s);
       r4 = rng.log_uniform(0.01, 1);
-    } else {  // arbitrary faces, some nearly collinear
+    } else if (trial % 4 == 1) {
+      // nearly collinear centres that a fourth sphere does touch: the
+      // fourth sphere (P, r4) first, each radius its centre's distance to
+      // P less r4
+      const Vec3 a = rng.vec(3), d = rng.uniform(0.5, 2) * rng.vec(1).normalized();
+      const double eps = rng.log_uniform(1e-6, 1e-2);
+      tol = std::max(tol, kCollinearMiss / eps);
+      const Vec3 c[3] = {a, a + d,
+                         a + rng.uniform(-1, 2) * d + eps * d.norm() * d.unitOrthogonal()};
+      r4 = rng.log_uniform(0.01, 0.4);
+      const Vec3 P = a + rng.uniform(0, 1) * d +
+                     rng.uniform(0.5, 2) * d.cross(rng.vec(1)).normalized();
+      for (int i = 0; i < 3; ++i) s[i] = Sphere{c[i], (P - c[i]).norm() - r4};
+    } else {  // arbitrary faces
       for (auto& q : s) q = Sphere{rng.vec(3), rng.log_uniform(0.01, 1)};
-      if (trial % 4 == 1) {
-        Vec3 d = s[1].centre - s[0].centre;
-        double eps = rng.log_uniform(1e-6, 1e-2);
-        s[2].centre = s[0].centre + rng.uniform(-1, 2) * d +
-                      eps * d.norm() * d.unitOrthogonal();
-        ++near_collinear;
-      }
       r4 = rng.log_uniform(0.01, 3);
     }
     auto m = fabric::trilaterate(s[0], s[1], s[2], r4);
+    // solved exactly when a touching sphere exists (an independent test of
+    // existence; faces within 1e-9 of the boundary are not judged)
+    const int exists = touching_sphere_exists(s, r4);
+    if (exists == 1) EXPECT_TRUE(m.has_value()) << "trial " << trial << ", r4 " << r4;
+    if (exists == 0) EXPECT_FALSE(m.has_value()) << "trial " << trial << ", r4 " << r4;
+    if (trial % 2 == 0) {
+      touching += exists == 1;
+      fall_through += exists == 0;
+    }
     if (!m) continue;
     ++solved;
+    if (trial % 4 == 1) ++near_collinear;
     for (const Vec3& p : {m->positive, m->negative}) {
       ASSERT_TRUE(p.allFinite());
-      for (const auto& q : s) ASSERT_LT(miss(p, r4, q), 1e-10);
+      for (const auto& q : s) {
+        ASSERT_LT(miss(p, r4, q), tol);
+        worst = std::max(worst, miss(p, r4, q) / tol);
+      }
     }
     // positive lies on the right-hand normal side of (1, 2, 3)
     Vec3 n = (s[1].centre - s[0].centre).cross(s[2].centre - s[0].centre);
     EXPECT_GE((m->positive - s[0].centre).dot(n), 0.0);
     EXPECT_LE((m->negative - s[0].centre).dot(n), 0.0);
   }
-  EXPECT_GT(solved, 5000);
-  EXPECT_GT(near_collinear, 4000);
+  std::printf("solved %d of 20000: touching faces %d with a touching sphere, %d without "
+              "(of 10000); %d of 5000 nearly collinear; largest miss %.2g of its tolerance\n",
+              solved, touching, fall_through, near_collinear, worst);
+  EXPECT_GT(touching, 1000);      // both sides of the existence boundary drawn
+  EXPECT_GT(fall_through, 1000);
+  EXPECT_EQ(near_collinear, 5000);  // each built around a fourth sphere
 }
 
 TEST(Trilateration, SolutionMovesWithTheFace) {
   Rng rng;
+  int moved = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     Sphere s[3];
     touching_face(rng, rng.log_uniform(0.05, 1), rng.log_uniform(0.05, 1),
                   rng.log_uniform(0.05, 1), s);
     double r4 = rng.log_uniform(0.2, 1);
+    if (touching_sphere_exists(s, r4) != 1) continue;
     auto m = fabric::trilaterate(s[0], s[1], s[2], r4);
-    if (!m) continue;
+    ASSERT_TRUE(m.has_value()) << "trial " << trial;
+    ++moved;
     Eigen::Matrix3d R =
         Eigen::AngleAxisd(rng.uniform(0, 2 * M_PI), rng.vec(1).normalized())
             .toRotationMatrix();
@@ -99,6 +157,7 @@ TEST(Trilateration, SolutionMovesWithTheFace) {
     EXPECT_LT((mt->positive - (R * m->positive + T)).norm(), 1e-9 * (1 + T.norm()));
     EXPECT_LT((mt->negative - (R * m->negative + T)).norm(), 1e-9 * (1 + T.norm()));
   }
+  EXPECT_GT(moved, 1000);  // of 2000 faces, those a sphere can touch
 }
 
 TEST(Trilateration, AxisAlignedFacesNeedNoSpecialCase) {
