@@ -277,20 +277,29 @@ def bad_input(args, chk):
     base = su.header(0.01) + su.MATERIALS
     three = "".join("create_atoms 1 single %s 0.005 0.005 units box\n"
                     % su.num(0.002 + 0.002 * i) for i in range(3))
+    # each case with the phrase its own check writes, so that another error
+    # on the way cannot pass for it (without grains LIGGGHTS stops first:
+    # "Atom types must start from 1")
+    grains = three + "set type 1 diameter 0.002 density 2650\n"
     cases = [
         ("three grains", three + "set type 1 diameter 0.002 density 2650\n"
-         "compute c all constriction/size\nthermo_style custom step c_c[1]\nrun 0\n"),
-        ("sphere container", "region s sphere 0 0 0 1 units box\n"
-         "compute c all constriction/size container s\nrun 0\n"),
-        ("unknown keyword", "compute c all constriction/size walls 1\n"),
-        ("fabric of another style", "compute k all ke\n"
-         "compute c all constriction/size fabric k\nthermo_style custom step c_c[1]\nrun 0\n"),
+         "compute c all constriction/size\nthermo_style custom step c_c[1]\nrun 0\n",
+         "has 3 grains; a constriction network needs at least 4"),
+        ("sphere container", grains + "region s sphere 0 0 0 1 units box\n"
+         "compute c all constriction/size container s\nrun 0\n",
+         "only a block container is supported"),
+        ("unknown keyword", "compute c all constriction/size walls 1\n",
+         "unknown keyword 'walls': allowed are container"),
+        ("fabric of another style", grains + "compute k all ke\n"
+         "compute c all constriction/size fabric k\nthermo_style custom step c_c[1]\nrun 0\n",
+         "is style ke, not primary/fabric"),
     ]
-    for what, tail in cases:
+    for what, tail, phrase in cases:
         inp = su.write_file(os.path.join(args.work, "bad", "in.bad"), base + tail)
         res = su.run_launcher(args, inp, timeout=60)
-        chk.check("%s: an ERROR, no crash" % what,
-                  not res.crashed() and not res.timed_out and res.errors(),
+        chk.check("%s: an ERROR saying '%s', no crash" % (what, phrase),
+                  not res.crashed() and not res.timed_out
+                  and any(phrase in e for e in res.errors()),
                   res.describe())
     # A fine grain inside a coarse one: hidden, counted, warned.
     text = lattice_scene() + ("create_atoms 2 single %s %s %s units box\n"
