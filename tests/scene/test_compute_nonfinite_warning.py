@@ -9,7 +9,8 @@ without a word. Checked:
     run (run 0, then 2 steps) prints a WARNING from the compute that names
     the non-finite positions or forces, once per run, and does not crash;
   * the same column without the duplicate: no such warning (and the column
-    is classified as before: particles 3, the thermo line finite).
+    is classified as before: particles 3, none loose (each overlaps a
+    neighbour by 0.02 mm and min_contacts is 1), the thermo line finite).
 """
 import os
 import re
@@ -71,8 +72,9 @@ def main():
                       "\n".join(warnings))
             rows = re.findall(r"^\s+0\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s*$",
                               res.output, re.M)
-            chk.check("%s: step 0 thermo: 3 particles, finite values (%s)"
+            chk.check("%s: step 0 thermo: 3 particles, none loose, finite values (%s)"
                       % (name, rows[:1]), rows and float(rows[0][0]) == 3
+                      and float(rows[0][1]) == 0
                       and "nan" not in " ".join(rows[0]).lower(),
                       res.describe())
     chk.finish()
