@@ -242,9 +242,15 @@ def main():
                         cwd=args.source, capture_output=True, text=True, timeout=600)
     vpath = os.path.join(dest, "verdict.csv")
     vrows = list(csv.DictReader(open(vpath))) if os.path.exists(vpath) else []
-    chk.check("constriction_verdict with --launcher %s (relative): exit %d, a row per run (%d of %d)"
-              % (rel, p8.returncode, len(vrows), len(rows)),
-              p8.returncode == 0 and sorted(v["run"] for v in vrows) == sorted(r["name"] for r in rows),
+    share = {r["name"]: float(r["primary_mass_pct"]) for r in rows}
+    off = [(v["run"], v["primary_mass_percent"], share.get(v["run"])) for v in vrows
+           if v["run"] not in share
+           or abs(float(v["primary_mass_percent"]) - share[v["run"]]) > 0.006]
+    chk.check("constriction_verdict with --launcher %s (relative): exit %d, a row per run (%d of %d) "
+              "with the run's primary %% by mass (to the CSV's 2 decimals; off: %s)"
+              % (rel, p8.returncode, len(vrows), len(rows), off),
+              p8.returncode == 0 and sorted(v["run"] for v in vrows) == sorted(r["name"] for r in rows)
+              and not off,
               p8.stdout[-1500:] + p8.stderr[-1500:])
     chk.finish()
 
