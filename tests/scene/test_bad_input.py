@@ -148,7 +148,8 @@ def cases(args, work):
 
     # -- porosity
     for p in ("0", "1", "-0.1", "1.5"):
-        add("porosity %s" % p, ok, [r"porosity",
+        # the value beside its keyword: "between 0 and 1" alone holds 0 and 1
+        add("porosity %s" % p, ok, [r"porosity %s " % re.escape(p),
                                     r"between 0 and 1|\(0, ?1\)|0\s*\.\.\s*1"
                                     r"|0 < .* < 1"],
             [float(p)], args=fix_args(porosity=p))
