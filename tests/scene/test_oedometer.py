@@ -122,7 +122,7 @@ def main():
     res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
                           variables={"out": out, "every": 2000, "side": 2.75, "kn": KN},
                           log=os.path.join(args.work, "oedometer.log"),
-                          cwd=args.source, timeout=900)
+                          cwd=args.source, timeout=600)
     if not chk.check("the oedometer scene runs (%.0f s)" % res.seconds,
                      res.returncode == 0, res.describe()):
         chk.finish()

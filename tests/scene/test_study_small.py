@@ -53,7 +53,7 @@ def main():
     chk = su.Checker()
     driver = os.path.join(args.source, "tools", "oedometer_study.py")
     cmd = ["/usr/bin/python3", driver, "--small", "--jobs", "2", "--out", args.work]
-    p = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=1800)
+    p = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=800)
     print(p.stdout[-3000:], p.stderr[-3000:])
     chk.check("the driver exits 0 (got %d)" % p.returncode,
                   p.returncode == 0)
