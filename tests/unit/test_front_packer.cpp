@@ -156,7 +156,9 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
 // Every grain placed (at least 99.5 %), no overlap, inside, mass shares and
 // porosity on target; uniform by volume (specimen_measure, exact
 // sphere-box volumes): 27 sub-cubes and the interior near the target.
-TEST_P(PackingInvariants, AllPlacedNoOverlapOnTargetUniformByVolume) {
+// At least 99.5 % placed (Cu 2.0 at 0.35, just above the 0.342 it packs
+// full at, places 99.8 %; the others every grain).
+TEST_P(PackingInvariants, PlacedNoOverlapOnTargetUniformByVolume) {
   const Case& c = GetParam();
   Specimen s = make(c.psd, c.porosity, c.side, c.arrangement);
   std::string what = c.psd + " " + to_string(c.arrangement);
@@ -422,7 +424,7 @@ TEST(FrontPacker, CentreStartPlacesEveryGrain) {
   spec.start = Start::centre;
   PackingResult r = pack(spec);
   EXPECT_EQ(r.placement[0], Placement::first_face);
-  EXPECT_GE(r.placed(), 0.995 * list.total());
+  EXPECT_EQ(r.unplaced(), 0);  // 7,347 of 7,347
 }
 
 // Spearman rank correlation (no ties expected to matter) of two series.
