@@ -194,10 +194,13 @@ def main():
     chk.note("%d grains, %d particle contacts, %d wall contacts, mean normal force %.4g N; "
              "primary: compute %d, recount %d, both %d"
              % (len(ids), len(fn_pp), len(wall_forces), mean, cls.sum(), recount.sum(), both))
+    # grain for grain: the recount's wall forces are rebuilt from the linear
+    # model and may differ from the stored ones in the last digits, which no
+    # grain's class depends on here (measured: 136 primary, all 136 shared)
     chk.check("primary fabric: precision %.2f %% and recall %.2f %% of the compute's "
-              "primary set against the recount (both >= 99 %%)"
+              "primary set against the recount (both 100 %%)"
               % (100 * precision, 100 * recall),
-              precision >= 0.99 and recall >= 0.99 and recount.sum() > 10)
+              precision == 1 and recall == 1 and recount.sum() > 10)
     chk.check("the specimen carries load: some grains are primary fabric", cls.sum() > 10)
     # The global figures of the compute (fabric_global.txt: step, then the
     # vector) against the recount.
@@ -218,9 +221,11 @@ def main():
     v = [float(t) for t in gl[-1][1:]]
     n = len(ids)
     primary_mass = 100 * mass[recount == 1].sum() / mass.sum()
-    want = [("particles", 1, n, 0), ("loose particles", 2, n - recount.sum(), 0.01 * n),
-            ("loose % by number", 3, 100 * (1 - recount.mean()), 1.0),
-            ("primary % by mass", 4, primary_mass, 1.0),
+    # the classes exactly (to the 6 digits of the file); the force sums to the
+    # rebuilt wall forces' accuracy
+    want = [("particles", 1, n, 0), ("loose particles", 2, n - recount.sum(), 0),
+            ("loose % by number", 3, 100 * (1 - recount.mean()), 1e-4),
+            ("primary % by mass", 4, primary_mass, 1e-4),
             ("contacts", 10, len(fn_pp) + len(wall_forces), 0.005 * (len(fn_pp) + len(wall_forces))),
             ("loaded contacts", 11, nloaded, 0.01 * nloaded),
             ("mean normal force", 12, mean, 0.01 * mean),
