@@ -9,7 +9,12 @@ repository root with `-var out rundir`, and returns one row: wall time,
 steps, whether the run stopped at rest, the lid stress, primary % by mass,
 loose % by number, the OZ % (the paper's rule and oz_tolerance), the
 anisotropies a_c and a_n, and the grains; None if the run failed (its
-output is in rundir/screen.txt).
+output is in rundir/screen.txt). With `checkpoint` N among the variables,
+each job ends after N blocks with a checkpoint and the next job goes on
+from it (`resume` 1) until the run stops; a folder that already holds a
+checkpoint (a job cut off, e.g. by a session's or a queue's time limit)
+goes on from it with its own copy of the scene, and the wall time adds up
+over the jobs (rundir/wall_s.txt).
 
 run_all(todo, jobs, one, csv_path, fields, order) runs `one(item)` for each
 item, `jobs` at a time, and appends each row to csv_path as it comes
@@ -36,22 +41,42 @@ RESULT_FIELDS = ["wall_s", "steps", "at_rest", "lid_stress_Pa", "primary_mass_pc
 def run_scene(rundir, variables, ranks=1):
     os.makedirs(rundir, exist_ok=True)
     scene = os.path.join(rundir, "in.oedometer")
-    shutil.copyfile(os.path.join(ROOT, "input_scripts", "in.oedometer"), scene)
-    cmd = [os.path.join(ROOT, "build", "liggghts-fabric"), "-in", scene,
-           "-log", os.path.join(rundir, "log.lammps"), "-var", "out", rundir]
-    for k, val in variables.items():
-        cmd += ["-var", k, str(val)]
-    if ranks > 1:
-        root = ["--allow-run-as-root"] if os.geteuid() == 0 else []
-        cmd = ["mpirun"] + root + ["--oversubscribe", "-np", str(ranks)] + cmd
-    t0 = time.perf_counter()
-    with open(os.path.join(rundir, "screen.txt"), "w") as f:
-        rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=ROOT)
-    wall = time.perf_counter() - t0
-    text = open(os.path.join(rundir, "screen.txt"), errors="replace").read()
-    if rc != 0:
-        sys.stderr.write("exit %d: see %s/screen.txt\n" % (rc, rundir))
-        return None
+    screen = os.path.join(rundir, "screen.txt")
+    wall_file = os.path.join(rundir, "wall_s.txt")
+    resume = (os.path.exists(os.path.join(rundir, "checkpoint.restart"))
+              and os.path.exists(scene) and os.path.exists(screen))
+    if not resume:
+        shutil.copyfile(os.path.join(ROOT, "input_scripts", "in.oedometer"), scene)
+        if os.path.exists(wall_file):
+            os.remove(wall_file)
+    wall = float(open(wall_file).read()) if resume and os.path.exists(wall_file) else 0.0
+    while True:
+        cmd = [os.path.join(ROOT, "build", "liggghts-fabric"), "-in", scene,
+               "-log", os.path.join(rundir, "log.lammps"), "-var", "out", rundir]
+        for k, val in variables.items():
+            cmd += ["-var", k, str(val)]
+        cmd += ["-var", "resume", "1" if resume else "0"]
+        if ranks > 1:
+            root = ["--allow-run-as-root"] if os.geteuid() == 0 else []
+            cmd = ["mpirun"] + root + ["--oversubscribe", "-np", str(ranks)] + cmd
+        t0 = time.perf_counter()
+        with open(screen, "a" if resume else "w") as f:
+            start = f.tell()
+            rc = subprocess.call(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=ROOT)
+        wall += time.perf_counter() - t0
+        with open(wall_file, "w") as f:
+            f.write("%.1f\n" % wall)
+        with open(screen, errors="replace") as f:
+            f.seek(start)
+            job = f.read()
+        if rc != 0:
+            sys.stderr.write("exit %d: see %s/screen.txt\n" % (rc, rundir))
+            return None
+        if "CHECKPOINT: written" in job and not re.search(r"^STOP: ", job, re.M):
+            resume = True
+            continue
+        break
+    text = open(screen, errors="replace").read()
     stop = re.search(r"^STOP: (at rest|maximum time).*?after (\d+) steps.*?"
                      r"lid stress ([0-9.eE+-]+) Pa", text, re.M)
     fab = re.search(r"^FABRIC: loose ([0-9.eE+-]+) % by number, primary fabric "

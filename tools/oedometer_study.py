@@ -10,8 +10,10 @@ One run of input_scripts/in.oedometer per (rule, soil, side, seed), one run
 per core (--jobs), each written to OUT/runs/NAME; one CSV row per run in
 OUT/study.csv as it ends (rule, soil, side, seed, then the result fields of
 tools/oedometer_runs.py). Resumable: a run whose name is in the CSV is not
-run again. Progress: one line per finished run, with the count and the
-elapsed time.
+run again, and with --var checkpoint=N (blocks per job) a run cut off
+mid-way (the session's or the queue's time limit, a kill) goes on from its
+last checkpoint when the same command is given again. Progress: one line
+per finished run, with the count and the elapsed time.
 
   (default)      the full matrix: 2 rules x 4 soils x seeds 1-3 at the
                  scene's defaults (Hertz quartz, 100 kPa, side 7.7: 53,237

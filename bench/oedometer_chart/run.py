@@ -160,6 +160,9 @@ QUARTZ_VARIANTS = [
     ("thr_1e-2",      "force threshold", "1e-2", {"threshold": "1e-2"}, 1, False),
     ("thr_1e-5",      "force threshold", "1e-5", {"threshold": "1e-5"}, 1, True),
     ("ranks_2",       "ranks",      "2",     {},                      2, False),
+    # a job of 4 blocks at a time, each going on from the last one's
+    # checkpoint (3 resumes): its reference is the uninterrupted 2-rank run
+    ("resume_4",      "resume",     "checkpoint 4, 2 ranks", {"checkpoint": "4"}, 2, False),
     ("side_6.6",      "specimen size", "side 6.6", {"side": "6.6"},   1, False),
     ("side_8.8",      "specimen size", "side 8.8", {"side": "8.8"},   1, True),
     ("seed2",         "seed",       "2",     {"seed": "2"},           1, False),

@@ -91,8 +91,9 @@ SCENE_POSITIONS = [
     (r"^fix series .*", ["overlapping_zone_percent"], []),
     (r'^print "FABRIC: .*', ["loose_percent_by_number", "primary_percent_by_mass", "r1", "r2",
                              "overlapping_zone_percent"], []),
-    (r'^print "BEFORE LOADING: .*', [], ["contacts_per_grain", "few_contacts_percent",
-                                          "held_mass_percent"]),
+    (r'^if .* "print .BEFORE LOADING: .*', [], ["contacts_per_grain", "few_contacts_percent",
+                                                 "held_mass_percent"]),
+    (r'^print "CHECKPOINT: after .*', ["primary_percent_by_mass"], []),
 ]
 
 

@@ -1,0 +1,134 @@
+#!/usr/bin/python3
+"""Scene test: a run longer than a job goes on from a checkpoint
+(`-var checkpoint N`, then `-var resume 1`), on the scene of
+test_oedometer.py (side 2.75, Cu 2.5 DA, linear springs kn 2e7 N/m).
+
+1. A job with `checkpoint 3` ends after three blocks of loading: exit code
+   0, a CHECKPOINT line naming the step (6,000), checkpoint.restart and
+   checkpoint.in written, no final state (no final.dump, no STOP line).
+2. The same command with `resume 1`, on 2 ranks (the restart holds the
+   whole state; the ranks may change between jobs), runs to the stop: no
+   second specimen (the final state holds the grains of the first job),
+   fabric_series.txt one row per check from step 0 to the stop step, every
+   `every` steps, none twice and none missing, and the STOP line counts
+   the steps from the beginning of the loading.
+3. A resume changes the state only in what LIGGGHTS' restart cannot carry
+   (the walls' tangential springs, the servo's integral): the run resumed
+   after every eight blocks by tools/oedometer_runs.py (the study's driver)
+   ends at rest, its steps and wall time those of all its jobs, with a
+   primary fraction within 5 points of the run without checkpoints (this
+   specimen's block-to-block scatter is about 4 points; a resume that lost
+   the contacts or the specimen would be far off).
+4. Bad values: `resume 2` and `checkpoint -1` stop with an ERROR naming the
+   value; `resume 1` without a checkpoint stops with LIGGGHTS' ERROR naming
+   the file it cannot open (no crash).
+"""
+import os
+import re
+import sys
+
+import scene_util as su
+
+VARS = {"every": 2000, "side": 2.75, "kn": 2e7}
+
+
+def series_steps(path):
+    steps = []
+    for line in open(path):
+        if line.strip() and not line.startswith("#"):
+            steps.append(int(line.split()[0]))
+    return steps
+
+
+def fabric(text):
+    m = re.search(r"^FABRIC: loose \S+ % by number, primary fabric ([0-9.eE+-]+) % by mass",
+                  text, re.M)
+    return float(m.group(1)) if m else None
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    scene = os.path.join(args.source, "input_scripts", "in.oedometer")
+
+    def run(out, extra, nprocs=None, log="job"):
+        v = dict(VARS, out=out, **extra)
+        return su.run_launcher(args, scene, nprocs=nprocs, variables=v,
+                               log=os.path.join(args.work, log + ".log"),
+                               cwd=args.source, timeout=300)
+
+    # 1. a job that ends with a checkpoint
+    out = os.path.join(args.work, "split")
+    first = run(out, {"checkpoint": 3}, log="first")
+    ck = [l for l in first.output.splitlines() if l.startswith("CHECKPOINT:")]
+    chk.check("checkpoint 3: the job ends with exit code 0 and a CHECKPOINT line at step 6000",
+              first.returncode == 0 and ck and "step 6000" in ck[0]
+              and "CHECKPOINT: written" in first.output, first.describe())
+    chk.check("checkpoint.restart and checkpoint.in written, no final state, no STOP",
+              os.path.isfile(os.path.join(out, "checkpoint.restart"))
+              and os.path.isfile(os.path.join(out, "checkpoint.in"))
+              and not os.path.exists(os.path.join(out, "final.dump"))
+              and "STOP:" not in first.output)
+
+    # 2. resumed on 2 ranks, to the stop
+    second = run(out, {"resume": 1}, nprocs=2, log="second")
+    stop = [l for l in second.output.splitlines() if l.startswith("STOP:")]
+    chk.check("resume 1 on 2 ranks runs to the stop", second.returncode == 0 and stop
+              and stop[0].startswith("STOP: at rest"), second.describe())
+    final = os.path.join(out, "final.dump")
+    if not chk.check("the resumed job writes the final state", os.path.isfile(final)):
+        chk.finish()
+    snap = su.last_snapshot(final)
+    first_vtk = open(os.path.join(out, "grains_0.vtk")).read()
+    n0 = re.search(r"POINTS (\d+)", first_vtk)
+    chk.check("no second specimen: the final state holds the %s grains of the first job (got %d)"
+              % (n0.group(1) if n0 else "?", snap.natoms),
+              n0 and snap.natoms == int(n0.group(1)))
+    steps = series_steps(os.path.join(out, "fabric_series.txt"))
+    n_stop = int(re.search(r"after (\d+) steps", stop[0]).group(1)) if stop else -1
+    want = list(range(0, n_stop + 1, VARS["every"]))
+    chk.check("fabric_series.txt: one row per check from 0 to the stop step %d, none twice "
+              "or missing (%d rows)" % (n_stop, len(steps)), steps == want,
+              "got %s" % steps)
+    chk.check("no fabric_series.part left", not os.path.exists(os.path.join(out, "fabric_series.part")))
+
+    # 3. the driver: a checkpoint every 8 blocks, against the run without
+    sys.path.insert(0, os.path.join(args.source, "tools"))
+    import oedometer_runs
+    whole = run(os.path.join(args.work, "whole"), {}, log="whole")
+    p_whole = fabric(whole.output)
+    rundir = os.path.join(args.work, "driver")
+    row = oedometer_runs.run_scene(rundir, dict(VARS, checkpoint=8))
+    text = open(os.path.join(rundir, "screen.txt")).read()
+    jobs = text.count("CHECKPOINT: written")
+    p_split = float(row["primary_mass_pct"]) if row else None
+    chk.check("the driver goes on from each checkpoint to the stop (%d checkpoints), at rest"
+              % jobs, row and row["at_rest"] == "yes" and jobs >= 2, text[-2000:])
+    wall = float(open(os.path.join(rundir, "wall_s.txt")).read())
+    chk.check("the row's wall time is that of all the jobs (%.1f s)" % wall,
+              row and abs(float(row["wall_s"]) - wall) < 0.2 and wall > 0)
+    chk.check("primary %% by mass resumed every 8 blocks %s, without checkpoints %s: within 5 points"
+              % (p_split, p_whole), p_split is not None and p_whole is not None
+              and abs(p_split - p_whole) <= 5.0)
+
+    # 4. bad values
+    for extra, value in (({"resume": 2}, "2"), ({"checkpoint": -1}, "-1")):
+        key = list(extra)[0]
+        r = run(os.path.join(args.work, "bad_%s" % key), extra, log="bad_" + key)
+        errs = r.errors()
+        chk.check("%s %s: an ERROR naming it" % (key, value),
+                  r.returncode != 0 and not r.crashed() and errs
+                  and ("%s %s" % (key, value)) in errs[0], r.describe())
+    none = os.path.join(args.work, "nothing")
+    os.makedirs(none, exist_ok=True)
+    r = run(none, {"resume": 1}, log="no_checkpoint")
+    errs = [l for l in r.output.splitlines() if l.startswith("ERROR")]
+    chk.check("resume 1 without a checkpoint: an ERROR naming checkpoint.in",
+              r.returncode != 0 and not r.crashed() and errs and "checkpoint.in" in errs[0],
+              r.describe())
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()
