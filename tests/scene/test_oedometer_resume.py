@@ -18,11 +18,14 @@ test_oedometer.py (side 2.75, Cu 2.5 DA, linear springs kn 2e7 N/m).
    ends at rest, its steps and wall time those of all its jobs, with a
    primary fraction within 5 points of the run without checkpoints (this
    specimen's block-to-block scatter is about 4 points; a resume that lost
-   the contacts or the specimen would be far off).
+   the contacts or the specimen would be far off); it prints a progress
+   line per checkpoint.
 4. Bad values: `resume 2` and `checkpoint -1` stop with an ERROR naming the
    value; `resume 1` without a checkpoint stops with LIGGGHTS' ERROR naming
    the file it cannot open (no crash).
 """
+import contextlib
+import io
 import os
 import re
 import sys
@@ -99,9 +102,16 @@ def main():
     whole = run(os.path.join(args.work, "whole"), {}, log="whole")
     p_whole = fabric(whole.output)
     rundir = os.path.join(args.work, "driver")
-    row = oedometer_runs.run_scene(rundir, dict(VARS, checkpoint=8))
+    progress = io.StringIO()
+    with contextlib.redirect_stdout(progress):
+        row = oedometer_runs.run_scene(rundir, dict(VARS, checkpoint=8))
     text = open(os.path.join(rundir, "screen.txt")).read()
     jobs = text.count("CHECKPOINT: written")
+    lines = [l for l in progress.getvalue().splitlines() if "going on from the checkpoint" in l]
+    chk.check("the driver prints a progress line per checkpoint (%d lines, %d checkpoints)"
+              % (len(lines), jobs), len(lines) == jobs and jobs > 0
+              and all("steps of loading" in l and "primary" in l for l in lines),
+              progress.getvalue())
     p_split = float(row["primary_mass_pct"]) if row else None
     chk.check("the driver goes on from each checkpoint to the stop (%d checkpoints), at rest"
               % jobs, row and row["at_rest"] == "yes" and jobs >= 2, text[-2000:])
