@@ -10,8 +10,8 @@ test_oedometer.py (side 2.75, Cu 2.5 DA, linear springs kn 2e7 N/m).
    whole state; the ranks may change between jobs), runs to the stop: no
    second specimen (the final state holds the grains of the first job),
    fabric_series.txt one row per check from step 0 to the stop step, every
-   `every` steps, none twice and none missing, and the STOP line counts
-   the steps from the beginning of the loading.
+   `every` steps, none twice and none missing, and the STOP line and the
+   thermo's loading time count from the beginning of the loading.
 3. A resume changes the state only in what LIGGGHTS' restart cannot carry
    (the walls' tangential springs, the servo's integral): the run resumed
    after every eight blocks by tools/oedometer_runs.py (the study's driver)
@@ -95,6 +95,12 @@ def main():
               "or missing (%d rows)" % (n_stop, len(steps)), steps == want,
               "got %s" % steps)
     chk.check("no fabric_series.part left", not os.path.exists(os.path.join(out, "fabric_series.part")))
+    dt = re.search(r"^TIMESTEP: .*; dt = (\S+) s", second.output, re.M)
+    rows = re.findall(r"^ +(\d+) +([0-9.eE+-]+) ", re.split(r"Step +t_load", second.output, 1)[-1], re.M)
+    bad = [(int(st), float(t)) for st, t in rows
+           if dt and abs(float(t) - int(st) * float(dt.group(1))) > 1e-6 * int(st) * float(dt.group(1))]
+    chk.check("the resumed job's loading time (thermo t_load) is steps x dt from the start of "
+              "the loading (%d rows)" % len(rows), dt and rows and not bad, bad[:5])
 
     # 3. the driver: a checkpoint every 8 blocks, against the run without
     sys.path.insert(0, os.path.join(args.source, "tools"))
