@@ -20,7 +20,11 @@ runs, which does not need a specimen at rest:
    row's; cut into equal slices (--slices, --csv) the slices hold every
    grain, all of the mass and all of the fines, and their primary shares
    weighted by mass give the CSV row's.
-4. tools/constriction_verdict.py gives a verdict row per run with the
+4. tools/kinetic_energy.py finds in every run's final state the kinetic
+   energy of the run's last check (fabric_series.txt) and the CSV row's
+   primary share of the mass; its split into the slices' mean velocity and
+   the motion about it adds up to the whole.
+5. tools/constriction_verdict.py gives a verdict row per run with the
    launcher given by a path relative to the caller's folder.
 """
 import csv
@@ -231,6 +235,30 @@ def main():
                   ok and grains == int(row["grains"]) and abs(mass - 100) < 0.01
                   and abs(fines - 100) < 0.01 and abs(whole - float(row["primary_mass_pct"])) < 0.015,
                   p5.stdout[-1500:] + p5.stderr[-1500:])
+    # tools/kinetic_energy.py on every run's final state: the scene's own
+    # kinetic energy at its last check and the CSV's primary share
+    for row in rows:
+        rundir = os.path.join(args.work, "runs", row["name"])
+        series = [l.split() for l in open(os.path.join(rundir, "fabric_series.txt"))
+                  if l.strip() and not l.startswith("#")]
+        p6 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "kinetic_energy.py"),
+                             os.path.join(rundir, "final.dump"), "--slices", "4"],
+                            cwd=args.source, capture_output=True, text=True, timeout=120)
+        tot = re.search(r"kinetic energy (\S+) J", p6.stdout)
+        parts = re.search(r"^(\S+) J \(\d+ %\) in the mean velocity of 4 height slices, (\S+) J",
+                          p6.stdout, re.M)
+        prim = re.search(r"^primary: \d+ grains, (\S+) % of the mass", p6.stdout, re.M)
+        ke = float(tot.group(1)) if tot else float("nan")
+        want = float(series[-1][1]) if series else float("nan")
+        split_sum = float(parts.group(1)) + float(parts.group(2)) if parts else float("nan")
+        chk.check("%s: kinetic_energy: %.4g J (the last check's %.4g J), slices' mean + about "
+                  "%.4g J, primary %s %% of the mass (CSV %s)"
+                  % (row["name"], ke, want, split_sum, prim.group(1) if prim else None,
+                     row["primary_mass_pct"]),
+                  p6.returncode == 0 and abs(ke - want) <= 1e-3 * want
+                  and abs(split_sum - ke) <= 1e-3 * ke and prim is not None
+                  and abs(float(prim.group(1)) - float(row["primary_mass_pct"])) < 0.06,
+                  p6.stdout[-1500:] + p6.stderr[-1500:])
     # tools/constriction_verdict.py on the runs, the launcher given relative
     # to the caller's folder (each run's compute works in a folder of its
     # own, so the tool must resolve it first): a verdict row per run with the
