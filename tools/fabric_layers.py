@@ -101,10 +101,16 @@ def layers(cols):
     return out, top
 
 
+def share(value, form, none="-"):
+    """A share as text: form, or `none` where there is nothing to share."""
+    return none if value is None else form % value
+
+
 def slices(cols, n):
     """Rows (lo, hi, grains, mass %, primary %, d_mean/d_N, fines % of the
     specimen's fines mass, primary % of the slice's fines mass), heights in
-    d_N from the floor, n slices of equal height."""
+    d_N from the floor, n slices of equal height. A share of nothing (a
+    slice without grains or without fines) is None."""
     r, m, primary, dn, h, top = heights(cols)
     d = 2.0 * r
     order = np.argsort(d)
@@ -117,12 +123,11 @@ def slices(cols, n):
         g = (h >= edges[k]) & ((h < edges[k + 1]) if k < n - 1 else (h <= top))
         mass = m[g].sum()
         fm = m[g & fine].sum()
-        nan = float("nan")
         out.append((edges[k], edges[k + 1], int(g.sum()), 100.0 * mass / m.sum(),
-                    100.0 * m[g & primary].sum() / mass if mass > 0 else nan,
-                    (m[g] * d[g]).sum() / mass / dn if mass > 0 else nan,
+                    100.0 * m[g & primary].sum() / mass if mass > 0 else None,
+                    (m[g] * d[g]).sum() / mass / dn if mass > 0 else None,
                     100.0 * fm / m[fine].sum(),
-                    100.0 * m[g & fine & primary].sum() / fm if fm > 0 else nan))
+                    100.0 * m[g & fine & primary].sum() / fm if fm > 0 else None))
     return out, top, d15 / dn
 
 
@@ -158,9 +163,12 @@ def main():
             print("%13s %8s %7s %9s %10s %9s %11s" % ("height/d_N", "grains", "mass%",
                   "primary%", "d_mean/d_N", "fines%", "fines_prim%"))
             for lo, hi, n, mass, prim, dm, fsh, fprim in srows:
-                print("%6.2f-%-6.2f %8d %7.2f %9.2f %10.3f %9.2f %11.2f"
-                      % (lo, hi, n, mass, prim, dm, fsh, fprim))
-                csv_rows.append((name, lo, hi, n, mass, prim, dm, fsh, fprim))
+                print("%6.2f-%-6.2f %8d %7.2f %9s %10s %9.2f %11s"
+                      % (lo, hi, n, mass, share(prim, "%.2f"), share(dm, "%.3f"), fsh,
+                         share(fprim, "%.2f", "-")))
+                csv_rows.append((name, "%.3f" % lo, "%.3f" % hi, str(n), "%.3f" % mass,
+                                 share(prim, "%.3f", ""), share(dm, "%.4f", ""),
+                                 "%.3f" % fsh, share(fprim, "%.3f", "")))
             continue
         print("# %s: height %.2f coarsest diameters" % (dump, top))
         print("%-28s %13s %8s %7s %10s %9s" % ("layer", "height/d_N", "grains",
@@ -173,7 +181,7 @@ def main():
             f.write("run,height_lo_dN,height_hi_dN,grains,mass_pct,primary_pct,"
                     "d_mean_over_dN,fines_share_pct,fines_primary_pct\n")
             for row in csv_rows:
-                f.write("%s,%.3f,%.3f,%d,%.3f,%.3f,%.4f,%.3f,%.3f\n" % row)
+                f.write(",".join(row) + "\n")
 
 
 if __name__ == "__main__":
