@@ -28,6 +28,16 @@ the paper's 20 intervals), their share of the specimen's fines and the
 primary share of their mass. In a layered specimen the fines should carry
 load where they form a layer of their own (docs/validation.md). --csv FILE
 writes the rows of every argument to one CSV.
+
+A run folder with final_contacts.txt (the particle contacts of
+in.oedometer's last state) also gives each slice's anisotropies of Figs.
+15-16, a_c of the contact normals and a_n of the normal forces, by the
+definitions of compute primary/fabric (its entries 27-28): the contacts
+whose midpoint lies in the slice and whose normal force exceeds 1e-3 of
+the mean (the compute's default threshold; its mean also holds the wall
+contacts, which the file lacks). One tensor over a layered specimen mixes
+the fines' many contacts with the coarse grains' large forces; the slices
+show each layer's own.
 """
 import argparse
 import os
@@ -101,16 +111,53 @@ def layers(cols):
     return out, top
 
 
+def contact_dyads(path, cols):
+    """(height of each loaded contact's midpoint in d_N from the floor, unit
+    normal, normal force) from a final_contacts.txt of in.oedometer: per row
+    the two centres, the two ids, the periodic flag and the force on the
+    first particle."""
+    rows = np.loadtxt(path, skiprows=9, ndmin=2)
+    if rows.shape[1] != 12:
+        raise ValueError("%s: %d columns, expected the 12 of in.oedometer's "
+                         "final_contacts.txt" % (path, rows.shape[1]))
+    r = cols["radius"]
+    dn, floor = 2.0 * r.max(), (cols["z"] - r).min()
+    branch = rows[:, 0:3] - rows[:, 3:6]   # from the second centre to the first
+    normal = branch / np.linalg.norm(branch, axis=1)[:, None]
+    force = np.einsum("ij,ij->i", rows[:, 9:12], normal)
+    loaded = force > 1e-3 * force.mean()
+    h = (0.5 * (rows[:, 2] + rows[:, 5]) - floor) / dn
+    return h[loaded], normal[loaded], force[loaded]
+
+
+def anisotropies(normal, force):
+    """(a_c, a_n) of compute primary/fabric: sign(a_zz) sqrt(2/3 a:a) of
+    a = (15/2) dev(F) and of (15/2) (dev(Phi) - dev(F)), F the mean dyad of
+    the normals, Phi the normal-force-weighted one; None without contacts."""
+    if len(force) == 0:
+        return None, None
+    def scalar(dev):
+        a = 7.5 * dev
+        size = np.sqrt(2.0 / 3.0 * (a * a).sum())
+        return -size if a[2, 2] < 0 else size
+    def deviator(t):
+        return t - np.trace(t) / 3.0 * np.eye(3)
+    fabric = np.einsum("ij,ik->jk", normal, normal) / len(force)
+    phi = np.einsum("i,ij,ik->jk", force, normal, normal) / force.sum()
+    return scalar(deviator(fabric)), scalar(deviator(phi) - deviator(fabric))
+
+
 def share(value, form, none="-"):
     """A share as text: form, or `none` where there is nothing to share."""
     return none if value is None else form % value
 
 
-def slices(cols, n):
+def slices(cols, n, contacts=None):
     """Rows (lo, hi, grains, mass %, primary %, d_mean/d_N, fines % of the
-    specimen's fines mass, primary % of the slice's fines mass), heights in
-    d_N from the floor, n slices of equal height. A share of nothing (a
-    slice without grains or without fines) is None."""
+    specimen's fines mass, primary % of the slice's fines mass, a_c, a_n),
+    heights in d_N from the floor, n slices of equal height; a_c and a_n
+    from contacts, the output of contact_dyads. A share of nothing (a slice
+    without grains, fines or contacts) is None."""
     r, m, primary, dn, h, top = heights(cols)
     d = 2.0 * r
     order = np.argsort(d)
@@ -123,11 +170,19 @@ def slices(cols, n):
         g = (h >= edges[k]) & ((h < edges[k + 1]) if k < n - 1 else (h <= top))
         mass = m[g].sum()
         fm = m[g & fine].sum()
+        a_c = a_n = None
+        if contacts is not None:
+            hc, normal, force = contacts
+            c = (hc >= edges[k]) & ((hc < edges[k + 1]) if k < n - 1 else np.ones(len(hc), bool))
+            if k == 0:
+                c |= hc < 0.0
+            a_c, a_n = anisotropies(normal[c], force[c])
         out.append((edges[k], edges[k + 1], int(g.sum()), 100.0 * mass / m.sum(),
                     100.0 * m[g & primary].sum() / mass if mass > 0 else None,
                     (m[g] * d[g]).sum() / mass / dn if mass > 0 else None,
                     100.0 * fm / m[fine].sum(),
-                    100.0 * m[g & fine & primary].sum() / fm if fm > 0 else None))
+                    100.0 * m[g & fine & primary].sum() / fm if fm > 0 else None,
+                    a_c, a_n))
     return out, top, d15 / dn
 
 
@@ -153,22 +208,25 @@ def main():
             cols = last_snapshot(dump)
             rows, top = layers(cols)
             if args.slices:
-                srows, top, d15 = slices(cols, args.slices)
+                cpath = os.path.join(path, "final_contacts.txt")
+                contacts = contact_dyads(cpath, cols) if os.path.isfile(cpath) else None
+                srows, top, d15 = slices(cols, args.slices, contacts)
         except ValueError as e:
             sys.exit("fabric_layers: %s: %s" % (dump, e))
         if args.slices:
             name = os.path.basename(os.path.normpath(path))
             print("# %s: height %.2f coarsest diameters; fines: finer than d15 = %.3f d_N"
                   % (dump, top, d15))
-            print("%13s %8s %7s %9s %10s %9s %11s" % ("height/d_N", "grains", "mass%",
-                  "primary%", "d_mean/d_N", "fines%", "fines_prim%"))
-            for lo, hi, n, mass, prim, dm, fsh, fprim in srows:
-                print("%6.2f-%-6.2f %8d %7.2f %9s %10s %9.2f %11s"
+            print("%13s %8s %7s %9s %10s %9s %11s %6s %6s" % ("height/d_N", "grains", "mass%",
+                  "primary%", "d_mean/d_N", "fines%", "fines_prim%", "a_c", "a_n"))
+            for lo, hi, n, mass, prim, dm, fsh, fprim, a_c, a_n in srows:
+                print("%6.2f-%-6.2f %8d %7.2f %9s %10s %9.2f %11s %6s %6s"
                       % (lo, hi, n, mass, share(prim, "%.2f"), share(dm, "%.3f"), fsh,
-                         share(fprim, "%.2f", "-")))
+                         share(fprim, "%.2f"), share(a_c, "%.3f"), share(a_n, "%.3f")))
                 csv_rows.append((name, "%.3f" % lo, "%.3f" % hi, str(n), "%.3f" % mass,
                                  share(prim, "%.3f", ""), share(dm, "%.4f", ""),
-                                 "%.3f" % fsh, share(fprim, "%.3f", "")))
+                                 "%.3f" % fsh, share(fprim, "%.3f", ""),
+                                 share(a_c, "%.4f", ""), share(a_n, "%.4f", "")))
             continue
         print("# %s: height %.2f coarsest diameters" % (dump, top))
         print("%-28s %13s %8s %7s %10s %9s" % ("layer", "height/d_N", "grains",
@@ -179,7 +237,8 @@ def main():
     if args.csv:
         with open(args.csv, "w") as f:
             f.write("run,height_lo_dN,height_hi_dN,grains,mass_pct,primary_pct,"
-                    "d_mean_over_dN,fines_share_pct,fines_primary_pct\n")
+                    "d_mean_over_dN,fines_share_pct,fines_primary_pct,"
+                    "fabric_anisotropy,force_anisotropy\n")
             for row in csv_rows:
                 f.write(",".join(row) + "\n")
 

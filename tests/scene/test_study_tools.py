@@ -19,7 +19,8 @@ runs, which does not need a specimen at rest:
    inside the interior, and the whole specimen's primary share is the CSV
    row's; cut into equal slices (--slices, --csv) the slices hold every
    grain, all of the mass and all of the fines, and their primary shares
-   weighted by mass give the CSV row's.
+   weighted by mass give the CSV row's; one slice gives the CSV row's a_c
+   and a_n.
 4. tools/kinetic_energy.py finds in every run's final state the kinetic
    energy of the run's last check (fabric_series.txt) and the CSV row's
    primary share of the mass; its split into the slices' mean velocity and
@@ -235,6 +236,22 @@ def main():
                   ok and grains == int(row["grains"]) and abs(mass - 100) < 0.01
                   and abs(fines - 100) < 0.01 and abs(whole - float(row["primary_mass_pct"])) < 0.015,
                   p5.stdout[-1500:] + p5.stderr[-1500:])
+        # one slice: its anisotropies from final_contacts.txt are the
+        # compute's whole-specimen a_c and a_n (entries 27-28) within 1 % (or
+        # 0.01); they differ only by the threshold's mean, which in the
+        # compute holds the wall contacts too
+        csv1 = os.path.join(args.work, row["name"] + "_slice.csv")
+        p7 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
+                             "--slices", "1", "--csv", csv1, rundir],
+                            cwd=args.source, capture_output=True, text=True, timeout=120)
+        one = list(csv.DictReader(open(csv1))) if p7.returncode == 0 and os.path.isfile(csv1) else []
+        a = [float(one[0][k]) if len(one) == 1 and one[0][k] else float("nan")
+             for k in ("fabric_anisotropy", "force_anisotropy")]
+        b = [float(row[k]) for k in ("fabric_anisotropy", "force_anisotropy")]
+        chk.check("%s: fabric_layers --slices 1: a_c %.4f, a_n %.4f (compute: %.4f, %.4f)"
+                  % (row["name"], a[0], a[1], b[0], b[1]),
+                  all(abs(x - y) < max(0.01, 0.01 * abs(y)) for x, y in zip(a, b)),
+                  p7.stdout[-1500:] + p7.stderr[-1500:])
     # tools/kinetic_energy.py on every run's final state: the scene's own
     # kinetic energy at its last check and the CSV's primary share
     for row in rows:
