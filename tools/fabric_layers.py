@@ -78,7 +78,8 @@ def heights(cols):
 
 def layers(cols):
     """Rows (label, lo, hi, grains, mass %, primary % of its mass,
-    mean diameter / d_N), heights in d_N from the floor."""
+    mean diameter / d_N; None for a layer without grains), heights in d_N
+    from the floor."""
     for need in ("z", "radius", "mass", "c_pf[2]"):
         if need not in cols:
             raise ValueError("the dump has no column %s" % need)
@@ -106,8 +107,8 @@ def layers(cols):
         mass = m[g].sum()
         out.append((label, max(lo, 0.0), min(hi, top), int(g.sum()),
                     100.0 * mass / m.sum(),
-                    100.0 * m[g & primary].sum() / mass if mass > 0 else float("nan"),
-                    (m[g] * 2.0 * r[g]).sum() / mass / dn if mass > 0 else float("nan")))
+                    100.0 * m[g & primary].sum() / mass if mass > 0 else None,
+                    (m[g] * 2.0 * r[g]).sum() / mass / dn if mass > 0 else None))
     return out, top
 
 
@@ -232,8 +233,8 @@ def main():
         print("%-28s %13s %8s %7s %10s %9s" % ("layer", "height/d_N", "grains",
                                              "mass%", "primary%", "d_mean/d_N"))
         for label, lo, hi, n, mass, prim, dm in rows:
-            print("%-28s %6.2f-%-6.2f %8d %7.2f %10.2f %9.3f"
-                  % (label, lo, hi, n, mass, prim, dm))
+            print("%-28s %6.2f-%-6.2f %8d %7.2f %10s %9s"
+                  % (label, lo, hi, n, mass, share(prim, "%.2f"), share(dm, "%.3f")))
     if args.csv:
         with open(args.csv, "w") as f:
             f.write("run,height_lo_dN,height_hi_dN,grains,mass_pct,primary_pct,"
