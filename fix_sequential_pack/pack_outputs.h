@@ -85,7 +85,7 @@ PackReport pack_report(const PackingResult& res, const ParticleList& list,
                        const Box& container, double seconds);
 
 // Below this size assortativity (in the interior) a layer-wise specimen is
-// reported as not layered: discrete specimens measure -0.15 to -0.17 there
+// reported as not layered: discrete specimens measure -0.13 to -0.17 there
 // (a random packing of the same grains gives the same within 0.025 over the
 // container, bench/random_reference).
 constexpr double kLayeredAssortativity = 0.1;

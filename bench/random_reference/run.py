@@ -3,7 +3,7 @@
 
     /usr/bin/python3 bench/random_reference/run.py [--soils cu2.0 cu2.5 ...] [--side 4]
         [--seed 1] [--phi 0.73] [--steps 150000] [--out out/random_reference]
-        [--launcher build/liggghts-fabric]
+        [--packings discrete layerwise random] [--launcher build/liggghts-fabric]
 
 The size assortativity of touching pairs (fix sequential/pack's `structure`
 line, f_ID[10]) is Newman's correlation of ln r over the contacts: 0 when the
@@ -31,6 +31,9 @@ container), the random one across its periodic faces. One CSV row per soil
 and packing in OUT/SOIL/assortativity.csv, gathered for every soil in OUT
 into OUT/assortativity.csv. Resumable: a packing whose dump exists is
 measured again, not run again (delete OUT/SOIL/*.dump to redo it).
+--packings measures only those packings (the random one needs the discrete
+dump); the rows of the others already in OUT/SOIL/assortativity.csv are
+kept, so a change of one rule re-measures that rule alone.
 """
 import argparse
 import csv
@@ -47,6 +50,7 @@ import soils  # noqa: E402  (the shipped soils)
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 HERE = os.path.dirname(os.path.abspath(__file__))
+PACKINGS = ("discrete", "layerwise", "random")
 LAUNCHER = [os.path.join(ROOT, "build", "liggghts-fabric")]  # --launcher replaces it
 TOLS = [None, 1e-9, 1e-3, 1e-2]     # None: overlapping pairs only (gap < 0)
 FIELDS = ["soil", "packing", "grains", "porosity", "tol", "contacts", "z_mean",
@@ -164,6 +168,8 @@ def main():
                          "(0.73 for Cu 2.0-2.5; Cu 3.0 needs 0.76)")
     ap.add_argument("--steps", type=int, default=150000)
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "random_reference"))
+    ap.add_argument("--packings", nargs="+", default=list(PACKINGS), choices=PACKINGS,
+                    help="the packings to make and measure (default all three)")
     ap.add_argument("--launcher", default=LAUNCHER[0], help="the liggghts-fabric executable")
     a = ap.parse_args()
     LAUNCHER[0] = os.path.abspath(a.launcher)
@@ -178,6 +184,8 @@ def main():
         os.makedirs(d, exist_ok=True)
         t0 = time.time()
         for rule in ("discrete", "layerwise"):
+            if rule not in a.packings and not (rule == "discrete" and "random" in a.packings):
+                continue
             dump = os.path.join(d, rule + ".dump")
             if not os.path.exists(dump):
                 liggghts("in.specimen", {"psd": psd, "side": a.side, "seed": a.seed,
@@ -185,7 +193,7 @@ def main():
                          os.path.join(d, rule + ".log"))
                 os.replace(dump + ".part", dump)
         dump = os.path.join(d, "random.dump")
-        if not os.path.exists(dump):
+        if "random" in a.packings and not os.path.exists(dump):
             grains = read_dump(os.path.join(d, "discrete.dump"))[2]
             edge0, r0, p0 = scatter(grains, 0.25, a.seed)
             data = os.path.join(d, "scattered.data")
@@ -202,18 +210,24 @@ def main():
                                    "dump": dump + ".part"}, os.path.join(d, "random.log"))
             os.replace(dump + ".part", dump)
         rows = []
-        for packing in ("discrete", "layerwise", "random"):
-            lo, hi, r, p = read_dump(os.path.join(d, packing + ".dump"))
-            rows += measure(soil, packing, r, p, lo, hi, periodic=(packing == "random"))
-        write_csv(os.path.join(d, "assortativity.csv"), rows)
-        jam = next(r for r in rows if r["packing"] == "random" and r["tol"] == "overlap")
-        if float(jam["z_contacting"]) < 6.0:
+        table = os.path.join(d, "assortativity.csv")
+        if os.path.exists(table):
+            with open(table) as f:
+                rows = [r for r in csv.DictReader(f) if r["packing"] not in a.packings]
+        for packing in PACKINGS:
+            if packing in a.packings:
+                lo, hi, r, p = read_dump(os.path.join(d, packing + ".dump"))
+                rows += measure(soil, packing, r, p, lo, hi, periodic=(packing == "random"))
+        rows.sort(key=lambda r: PACKINGS.index(r["packing"]))
+        write_csv(table, rows)
+        jam = next((r for r in rows if r["packing"] == "random" and r["tol"] == "overlap"), None)
+        if jam is not None and float(jam["z_contacting"]) < 6.0:
             print("%s: WARNING: the random packing is not jammed (%s overlapping contacts per "
                   "grain with contacts, below 6): delete %s and raise --phi"
                   % (soil, jam["z_contacting"], os.path.join(d, "random.dump")), flush=True)
         print("%s: %.0f s" % (soil, time.time() - t0), flush=True)
         for row in rows:
-            print("  %-10s %-8s grains %6d porosity %s contacts %6d z %5s (%5s with contacts) "
+            print("  %-10s %-8s grains %6s porosity %s contacts %6s z %5s (%5s with contacts) "
                   "no contact %5s%% assortativity %s"
                   % (row["packing"], row["tol"], row["grains"], row["porosity"], row["contacts"],
                      row["z_mean"], row["z_contacting"], row["no_contact_pct"],

@@ -167,3 +167,21 @@ TEST(PackOutputs, WarnsOfALayerwisePackingThatIsNotLayered) {
                                     fabric::Arrangement::layerwise)
                   .empty());
 }
+
+// The message prints the value to three decimals and must not contradict
+// the threshold: 0.0998 prints as +0.100, which is not below 0.1, so it is
+// no warning; 0.0994 prints as +0.099 and is one.
+TEST(PackOutputs, JudgesLayeringAsPrinted) {
+  ThreeSpheres s;
+  PackReport r = s.report();
+  const double target = r.vector.porosity;
+  r.vector.interior_size_assortativity = 0.0998;
+  EXPECT_TRUE(fabric::pack_warnings(r, s.res, s.list, target,
+                                    fabric::Arrangement::layerwise)
+                  .empty());
+  r.vector.interior_size_assortativity = 0.0994;
+  const auto w = fabric::pack_warnings(r, s.res, s.list, target,
+                                       fabric::Arrangement::layerwise);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("+0.099, below 0.1"), std::string::npos) << w[0];
+}
