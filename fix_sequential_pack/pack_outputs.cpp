@@ -140,7 +140,9 @@ std::string rounded(const PackReport& r, double target) {
 std::string not_layered(const PackVector& v) {
   const bool inner = std::isfinite(v.interior_size_assortativity);
   const double a = inner ? v.interior_size_assortativity : v.size_assortativity;
-  if (!(std::isfinite(a) && std::round(a * 1e3) * 1e-3 < kLayeredAssortativity)) return "";
+  if (!(std::isfinite(a) &&
+        std::round(a * 1e3) < std::round(kLayeredAssortativity * 1e3)))
+    return "";
   const std::string whole =
       inner ? "Over the whole container it is " +
                   format("%+.3f", v.size_assortativity) +
