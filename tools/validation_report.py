@@ -182,23 +182,25 @@ def cu_step_split(rows, tables):
         for a, b in zip(SOILS, SOILS[1:]):
             runs = {}
             for soil in (a, b):
-                runs[soil] = {x["seed"]: tables[x["name"]] for x in rows
+                runs[soil] = {x["seed"]: (float(x["primary_mass_pct"]),) + tuple(tables[x["name"]])
+                              for x in rows
                               if x["rule"] == rule and x["soil"] == soil and x["name"] in tables}
             seeds = sorted(set(runs[a]) & set(runs[b]), key=int)
             if not seeds:
                 continue
             pa, pb, shift, equal = [], [], [], []
             for seed in seeds:
-                da, ma, qa = runs[a][seed]
-                db, mb, qb = runs[b][seed]
+                # the run's own primary % (as in the matrix table); the split
+                # from the interval tables, the equal-diameter part the rest
+                ra, da, ma, qa = runs[a][seed]
+                rb, db, mb, qb = runs[b][seed]
                 ta = (ma * qa).sum() / ma.sum()
-                tb = (mb * qb).sum() / mb.sum()
                 order = np.argsort(da)
                 moved = (mb * np.interp(np.log(db), np.log(da[order]), qa[order])).sum() / mb.sum()
-                pa.append(ta)
-                pb.append(tb)
+                pa.append(ra)
+                pb.append(rb)
                 shift.append(moved - ta)
-                equal.append(tb - moved)
+                equal.append(rb - ra - (moved - ta))
             change = [y - x for x, y in zip(pa, pb)]
             lines.append("| %s | %s to %s | %s | %s to %s | %s | %s | %s |"
                          % (tag, a[2:], b[2:], ", ".join(seeds), fmt(stats(pa)), fmt(stats(pb)),
