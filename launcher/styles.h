@@ -13,6 +13,7 @@
 #include "command_psd_info.h"
 #include "compute_constriction_size.h"
 #include "compute_primary_fabric.h"
+#include "fix_quasi_static.h"
 #include "fix_sequential_pack.h"
 
 namespace fabric_styles {
@@ -39,7 +40,8 @@ using ComputeCreator =
     LAMMPS_NS::Compute *(*)(LAMMPS_NS::LAMMPS *, int, int, char **);
 
 inline std::vector<std::pair<std::string, FixCreator>> fixes() {
-  return {{"sequential/pack", &make_fix<LAMMPS_NS::FixSequentialPack>}};
+  return {{"sequential/pack", &make_fix<LAMMPS_NS::FixSequentialPack>},
+          {"quasi/static", &make_fix<LAMMPS_NS::FixQuasiStatic>}};
 }
 
 inline std::vector<std::pair<std::string, ComputeCreator>> computes() {

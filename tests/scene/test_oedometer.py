@@ -130,7 +130,7 @@ def main():
     text = res.text
     stop = [l for l in text.splitlines() if l.startswith("STOP:")]
     chk.check("it stops at rest", stop and stop[-1].startswith("STOP: at rest")
-              and "kinetic energy" in stop[-1] and "below" in stop[-1], stop)
+              and "kinetic energy" in stop[-1] and "unbalanced-force ratio" in stop[-1], stop)
     m = re.search(r"lid stress ([-0-9.eE+]+) Pa", stop[-1] if stop else "")
     sigma = float(m.group(1)) if m else float("nan")
     chk.check("lid stress %.0f Pa within 5 %% of %.0f Pa" % (sigma, STRESS),

@@ -1,0 +1,139 @@
+#include "fix_quasi_static.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "atom.h"
+#include "compute.h"
+#include "error.h"
+#include "fabric_outputs.h"
+#include "modify.h"
+#include "quasi_static.h"
+#include "style_args.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+// Per-atom column of compute primary/fabric with each grain's loaded
+// contacts (docs/compute_primary_fabric.md, Output info), counted from 0.
+constexpr int kLoadedContactsColumn = 0;
+}  // namespace
+
+FixQuasiStatic::FixQuasiStatic(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), alpha_(0.7) {
+  StyleArgs args(error, "Fix quasi/static", narg - 3, arg + 3,
+                 {"damping", "balance"});
+  for (int i = 0; i < args.size(); i += 2) {
+    const std::string kw = args[i];
+    if (kw == "damping") {
+      alpha_ = args.number(i, "the local damping coefficient, 0 <= alpha < 1");
+      args.require(fabric::valid_local_damping(alpha_), i,
+                   "must lie in 0 <= alpha < 1 (0: no damping; PFC's "
+                   "default 0.7; 1 would cancel every force along the motion)");
+    } else if (kw == "balance") {
+      fabric_id_ = args.value(i, "the ID of a compute primary/fabric, whose "
+                                 "loaded contacts and mean normal force the "
+                                 "unbalanced-force ratio uses");
+    } else {
+      args.unknown_keyword(i);
+    }
+  }
+  if (!atom->sphere_flag)
+    error->all(FLERR, "Fix quasi/static: needs atom_style granular (spheres "
+                      "with radius, mass, omega and torque)");
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 4;
+  global_freq = 1;
+  extscalar = 0;
+  extvector = 0;
+}
+
+int FixQuasiStatic::setmask() { return PRE_FINAL_INTEGRATE; }
+
+void FixQuasiStatic::init() {
+  fabric_ = nullptr;
+  if (fabric_id_.empty()) return;
+  const int c = modify->find_compute(fabric_id_.c_str());
+  if (c < 0)
+    error->all(FLERR, ("Fix quasi/static: balance compute ID '" + fabric_id_ +
+                       "' does not exist")
+                          .c_str());
+  fabric_ = modify->compute[c];
+  if (strcmp(fabric_->style, "primary/fabric") != 0)
+    error->all(FLERR, ("Fix quasi/static: balance compute '" + fabric_id_ +
+                       "' is a compute " + fabric_->style +
+                       ", not a compute primary/fabric")
+                          .c_str());
+}
+
+void FixQuasiStatic::setup(int) {
+  // the forces of the setup step, before any damping, count for a ratio
+  // asked for at this step
+  pre_final_integrate();
+}
+
+void FixQuasiStatic::pre_final_integrate() {
+  double **f = atom->f, **v = atom->v;
+  double **torque = atom->torque, **omega = atom->omega;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  resultant_.assign(nlocal, 0.0);
+  resultant_step_ = update->ntimestep;
+  for (int i = 0; i < nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    resultant_[i] = std::sqrt(f[i][0] * f[i][0] + f[i][1] * f[i][1] +
+                              f[i][2] * f[i][2]);
+    if (alpha_ == 0.0) continue;
+    fabric::damp_locally(f[i], v[i], alpha_);
+    fabric::damp_locally(torque[i], omega[i], alpha_);
+  }
+}
+
+void FixQuasiStatic::balance() {
+  if (balanced_step_ == update->ntimestep) return;
+  if (!fabric_)
+    error->all(FLERR, "Fix quasi/static: the unbalanced-force ratio needs "
+                      "the keyword balance with a compute primary/fabric");
+  if (resultant_step_ != update->ntimestep)
+    error->all(FLERR, "Fix quasi/static: the unbalanced-force ratio is asked "
+                      "for at a step whose forces the fix has not seen (before "
+                      "the first run, or between runs)");
+  if (fabric_->invoked_peratom != update->ntimestep) fabric_->compute_peratom();
+  if (fabric_->invoked_vector != update->ntimestep) fabric_->compute_vector();
+  balanced_step_ = update->ntimestep;
+  fabric::ForceBalance local;
+  double **loaded = fabric_->array_atom;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit) || !(mask[i] & fabric_->groupbit)) continue;
+    if (loaded[i][kLoadedContactsColumn] < 1.0) continue;
+    local.resultant_sum += resultant_[i];
+    local.grains += 1.0;
+  }
+  std::array<double, 4> sums = local.sums(), total{};
+  MPI_Allreduce(sums.data(), total.data(), 4, MPI_DOUBLE, MPI_SUM, world);
+  // the contacts: their count and mean normal force, as the compute has them
+  const auto entry = [&](fabric::VectorEntry e) {
+    return fabric_->vector[static_cast<int>(e)];
+  };
+  total[3] = entry(fabric::VectorEntry::contacts);
+  total[2] = entry(fabric::VectorEntry::mean_normal_force) * total[3];
+  const fabric::ForceBalance b = fabric::ForceBalance::from_sums(total);
+  values_[0] = b.ratio();
+  values_[1] = b.grains > 0 ? b.resultant_sum / b.grains : 0.0;
+  values_[2] = b.contacts > 0 ? b.contact_sum / b.contacts : 0.0;
+  values_[3] = b.grains;
+}
+
+double FixQuasiStatic::compute_scalar() {
+  balance();
+  return values_[0];
+}
+
+double FixQuasiStatic::compute_vector(int i) {
+  balance();
+  return values_[i];
+}

@@ -1,0 +1,203 @@
+#!/usr/bin/python3
+"""Scene test: fix quasi/static on hand-built scenes whose answer is known,
+and its bad-input errors.
+
+A column of three spheres (d 2 mm, linear springs kn 2e7 N/m) stands between
+two walls with every overlap 2e-5 m: each contact carries 400 N and every
+sphere's resultant is 0, so the unbalanced-force ratio is 0; a free sphere
+beside it has no contact and is not counted. With the top wall lowered by
+1e-5 m the top contact carries 600 N: the top sphere's resultant is 200 N,
+the mean over the three 200/3 N, the mean contact force 450 N, the ratio
+0.148148... The ratio counts the forces before the local damping, so a
+damping of 0.5 reads the same. The same state on 2 ranks cut through the
+column (processors 1 1 2) reads the same. The damping itself: the free
+sphere pushed by fix addforce with 1 N for 100 steps gains (1 - alpha)
+of the work done on it.
+
+The command page's examples (docs/fix_quasi_static.md) run as written: the
+complete scene prints what the sentence after it says, and each one-line
+fix runs in it.
+"""
+import os
+import re
+
+import scene_util as su
+
+COLUMN = """\
+{preamble}region box block -0.01 0.01 -0.01 0.01 -0.001 0.008 units box
+create_box 2 box
+neigh_modify delay 0
+fix m1 all property/global kn peratomtypepair 2 2e7 2e7 2e7 2e7
+fix m2 all property/global kt peratomtypepair 2 2e7 2e7 2e7 2e7
+fix m3 all property/global gamman peratomtypepair 2 0 0 0 0
+fix m4 all property/global gammat peratomtypepair 2 0 0 0 0
+fix m5 all property/global coefficientFriction peratomtypepair 2 0.4 0.4 0.4 0.4
+pair_style gran model hooke/stiffness tangential history
+pair_coeff * *
+create_atoms 1 single 0 0 0.00098 units box
+create_atoms 1 single 0 0 0.00296 units box
+create_atoms 1 single 0 0 0.00494 units box
+create_atoms 1 single 0.005 0 0.003 units box
+set atom * diameter 0.002 density 2650
+fix wb all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0 store_force_contact_stress yes
+fix wt all wall/gran model hooke/stiffness tangential history primitive type 2 zplane {top} store_force_contact_stress yes
+compute pf all primary/fabric min_contacts 2 intervals 1
+fix qs all quasi/static damping {alpha} balance pf
+fix nve all nve/sphere
+timestep 1e-8
+thermo_style custom step f_qs f_qs[2] f_qs[3] f_qs[4] c_pf[10]
+thermo_modify format float %.12g
+run 0
+"""
+
+PUSH = """\
+{preamble}region box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
+create_box 1 box
+fix m1 all property/global kn peratomtypepair 1 2e7
+fix m2 all property/global kt peratomtypepair 1 2e7
+fix m3 all property/global gamman peratomtypepair 1 0
+fix m4 all property/global gammat peratomtypepair 1 0
+fix m5 all property/global coefficientFriction peratomtypepair 1 0.4
+pair_style gran model hooke/stiffness tangential history
+pair_coeff * *
+create_atoms 1 single 0 0 0 units box
+set atom * diameter 0.002 density 2650
+fix push all addforce 1.0 0 0
+fix qs all quasi/static damping {alpha}
+fix nve all nve/sphere
+timestep 1e-6
+variable x equal x[1]
+variable ke equal 0.5*mass[1]*vx[1]^2
+thermo_style custom step v_x v_ke
+thermo_modify format float %.15g
+run 100
+print "PUSHED: $(v_x) $(v_ke)"
+"""
+
+
+def thermo_row(text, step):
+    """The numbers of the thermo line of `step`."""
+    for line in text.splitlines():
+        w = line.split()
+        if w and w[0] == str(step) and len(w) > 1:
+            try:
+                return [float(x) for x in w[1:]]
+            except ValueError:
+                continue
+    return None
+
+
+def run_column(args, chk, name, top, alpha, nprocs=None, processors=None):
+    inp = su.write_file(os.path.join(args.work, name + ".in"), COLUMN.format(
+        preamble=su.preamble(processors=processors), top=su.num(top),
+        alpha=alpha))
+    res = su.run_launcher(args, inp, nprocs=nprocs)
+    row = thermo_row(res.text, 0)
+    chk.check("%s runs and prints the ratio" % name,
+              res.returncode == 0 and row is not None, res.describe())
+    return row
+
+
+def expect_error(args, chk, what, text, patterns):
+    inp = su.write_file(os.path.join(args.work, "bad.in"), text)
+    res = su.run_launcher(args, inp, timeout=60)
+    err = [l for l in res.text.splitlines() if "ERROR" in l]
+    ok = not res.crashed() and not res.timed_out and bool(err)
+    ok = ok and all(re.search(p, err[0]) for p in patterns)
+    chk.check("%s: ERROR matching %s" % (what, patterns), ok,
+              "\n".join(err) or res.describe())
+
+
+def check_page(args, chk):
+    with open(os.path.join(args.source, "docs", "fix_quasi_static.md")) as f:
+        text = f.read()
+    section = text[text.index("## Examples"):text.index("## Description")]
+    blocks = re.findall(r"```\n(.*?)```", section, re.S)
+    if not chk.check("the page has two example blocks", len(blocks) == 2,
+                     len(blocks)):
+        return
+    scene = blocks[1]
+    res = su.run_launcher(args, su.write_file(
+        os.path.join(args.work, "page.in"), scene))
+    row = thermo_row(res.text, 0)
+    chk.check("the page's complete scene runs and prints ratio 0.148, mean "
+              "resultant 66.7 N, mean contact 450 N, 3 grains",
+              row is not None and len(row) == 4 and
+              abs(row[0] - 0.148) < 5e-4 and abs(row[1] - 66.7) < 0.05 and
+              abs(row[2] - 450) < 1e-6 and row[3] == 3, row or res.describe())
+    fix_line = [l for l in scene.splitlines() if l.startswith("fix qs ")][0]
+    for i, line in enumerate(blocks[0].strip().splitlines()):
+        res = su.run_launcher(args, su.write_file(
+            os.path.join(args.work, "page_line%d.in" % i),
+            scene.replace(fix_line, line).replace(" f_qs f_qs[2] f_qs[3] f_qs[4]", "")))
+        chk.check("the page's one-line example %r runs" % line,
+                  res.returncode == 0 and not res.errors(), res.describe())
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+
+    balanced = run_column(args, chk, "balanced", 0.00592, 0)
+    if balanced:
+        ratio, resultant, contact, grains, contacts = balanced
+        chk.check("static column: ratio 0 (resultants below 1e-9 of the "
+                  "contact force), 3 grains counted, 400 N contacts",
+                  abs(ratio) < 1e-9 and grains == 3 and
+                  abs(contact - 400.0) < 1e-6, balanced)
+    want = (200.0 / 3.0) / 450.0
+    for name, alpha, nprocs, proc in (("off", 0, None, None),
+                                      ("off_damped", 0.5, None, None),
+                                      ("off_2ranks", 0.5, 2, "1 1 2")):
+        row = run_column(args, chk, name, 0.00591, alpha, nprocs, proc)
+        if row:
+            chk.check("%s: top sphere 200 N off balance: ratio %.12g (hand: "
+                      "%.12g), mean contact 450 N" % (name, row[0], want),
+                      abs(row[0] - want) < 1e-9 and abs(row[2] - 450.0) < 1e-6,
+                      row)
+
+    # the damping's work on a free sphere: KE = (1 - alpha) F x
+    for alpha in (0.0, 0.7):
+        inp = su.write_file(os.path.join(args.work, "push%g.in" % alpha),
+                            PUSH.format(preamble=su.preamble(), alpha=alpha))
+        res = su.run_launcher(args, inp)
+        m = re.search(r"^PUSHED: (\S+) (\S+)", res.text, re.M)
+        ok = res.returncode == 0 and m is not None
+        if ok:
+            x, ke = float(m.group(1)), float(m.group(2))
+            ok = x > 0 and abs(ke / (1.0 * x) - (1.0 - alpha)) < 0.02
+        chk.check("a free sphere pushed with 1 N, damping %g: it keeps "
+                  "(1 - alpha) of the work (first half step undamped: 1 of "
+                  "200 half kicks)" % alpha, ok,
+                  m.group(0) if m else res.describe())
+
+    check_page(args, chk)
+
+    base = COLUMN.format(preamble=su.preamble(), top="0.00592", alpha="0.5")
+    expect_error(args, chk, "damping 1", base.replace("damping 0.5", "damping 1"),
+                 [r"damping 1\b", r"0 <= alpha < 1"])
+    expect_error(args, chk, "damping -0.1",
+                 base.replace("damping 0.5", "damping -0.1"),
+                 [r"damping -0.1", r"0 <= alpha < 1"])
+    expect_error(args, chk, "damping abc",
+                 base.replace("damping 0.5", "damping abc"),
+                 [r"abc", r"not a number"])
+    expect_error(args, chk, "unknown keyword",
+                 base.replace("damping 0.5", "damping 0.5 speed 3"),
+                 [r"speed", r"damping balance"])
+    expect_error(args, chk, "balance of a missing compute",
+                 base.replace("balance pf", "balance nope"),
+                 [r"nope", r"does not exist"])
+    expect_error(args, chk, "balance of another compute",
+                 base.replace("balance pf", "balance k").replace(
+                     "fix qs", "compute k all ke\nfix qs"),
+                 [r"compute ke", r"primary/fabric"])
+    expect_error(args, chk, "ratio without balance",
+                 base.replace(" balance pf", ""),
+                 [r"needs the keyword balance"])
+    return chk.finish()
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
