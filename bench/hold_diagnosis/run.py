@@ -1,0 +1,177 @@
+#!/usr/bin/python3
+"""The hold diagnosis: what makes the oedometer specimen lose its stress when
+the lid stops (results/creep_diagnosis).
+
+Each row runs input_scripts/in.oedometer (a copy, so that editing the scene
+cannot change a running job) on DA Cu 2.5, side 3.3 (4,188 grains), seed 1,
+one rank, with one setting moved from the defaults, to the scene's rest;
+then the servo stops and the lid is held for 20,000 steps (-var hold). Two
+rows run at a time (one per core), about 20 minutes for the table.
+Writes OUT/hold_table.csv (one row per setting), OUT/hold_series.csv (the
+lid stress every 2,000 steps of each hold) and OUT/hold_diagnosis.png.
+
+Usage, from the repository root:
+  /usr/bin/python3 bench/hold_diagnosis/run.py [--out DIR] [--rows NAME ...]
+"""
+import argparse
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+# name, the setting moved (LIGGGHTS -var pairs), what it tests
+ROWS = [
+    ("default", [], "the scene's defaults"),
+    ("mu10", ["mu", "10", "eta", "0.04"],
+     "no sliding: mu = mu_wall = 10 (eta 0.04 keeps the rolling cap 2 eta mu = 0.8)"),
+    ("mu10_dt0.1", ["mu", "10", "eta", "0.04", "dtfac", "0.1"], "mu 10 at a quarter of the step"),
+    ("dt0.2", ["dtfac", "0.2"], "half the time step"),
+    ("dt0.1", ["dtfac", "0.1"], "a quarter of the time step"),
+    ("epsd2", ["rolling", "epsd2"], "rolling spring without its dashpot"),
+    ("rolling_off", ["rolling", "off"], "no rolling resistance"),
+    ("tdamp_off", ["tdamp", "off"], "no tangential dashpot"),
+    ("zeta0.1", ["zeta", "0.1"], "contact damping ratio 0.1 (default 0.6)"),
+    ("zeta0.3", ["zeta", "0.3"], "contact damping ratio 0.3"),
+    ("mass1e3", ["mass_scale", "1e3"], "density scaled 1e3 (default 1e4)"),
+    ("mass1e5", ["mass_scale", "1e5"], "density scaled 1e5"),
+    ("linear", ["hertz", "0", "kappa", "3957"],
+     "linear springs of the same secant stiffness (kappa 3957)"),
+    ("local0.7", ["damping", "0.7"], "Cundall's local damping 0.7"),
+    ("local0.7_dt0.1", ["damping", "0.7", "dtfac", "0.1"], "local damping 0.7, a quarter of the step"),
+    ("wall_mu0", ["mu_wall", "0"], "frictionless walls and lid"),
+    ("walls_mu10", ["mu_side", "10", "mu_lid", "10"],
+     "no sliding on the walls and the lid (their rolling cap kept at 0.4)"),
+    ("side_mu10", ["mu_side", "10"], "no sliding on the side walls and the top"),
+    ("lid_mu10", ["mu_lid", "10"], "no sliding on the lid"),
+    ("skin2e-4", ["skin", "2e-4"], "neighbour skin 4 times the default 5e-5 m"),
+]
+
+STOP = re.compile(r"^STOP: (at rest|maximum time)[^\n]*?after (\d+) steps[^\n]*", re.M)
+RATIO = re.compile(r"unbalanced-force ratio (\S+)")
+HOLD = re.compile(r"^HOLD: .*?lid stress (\S+) Pa before.*?, (\S+) Pa after "
+                  r"\((\S+) %\); primary fabric (\S+) % by mass before, (\S+) % after", re.M)
+
+
+def run_row(root, work, row, hold):
+    name, var, _ = row
+    out = os.path.join(work, name)
+    os.makedirs(out, exist_ok=True)
+    cmd = [root + "/build/liggghts-fabric", "-in", os.path.join(work, "in.oedometer"),
+           "-log", os.path.join(out, "log.lammps"),
+           "-var", "psd", root + "/input_scripts/psd/cu2.5.txt",
+           "-var", "mesh", root + "/input_scripts/meshes/lid.stl",
+           "-var", "side", "3.3", "-var", "hold", str(hold), "-var", "out", out]
+    for i in range(0, len(var), 2):
+        cmd += ["-var", var[i], var[i + 1]]
+    with open(os.path.join(out, "screen.txt"), "w") as f:
+        subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+    return name
+
+
+def read_row(work, row):
+    name, var, what = row
+    text = open(os.path.join(work, name, "screen.txt"), errors="replace").read()
+    s, h = STOP.search(text), HOLD.search(text)
+    err = re.search(r"^ERROR: (.*)$", text, re.M)
+    r = {"setting": name, "moved": " ".join(var) or "-", "tests": what,
+         "stop": s.group(1) if s else "error", "steps_to_stop": s.group(2) if s else "",
+         "ratio_at_stop": "",
+         "stress_before_Pa": "", "stress_after_Pa": "", "change_pct": "",
+         "primary_before_pct": "", "primary_after_pct": "",
+         "error": err.group(1)[:120] if err else ""}
+    m = RATIO.search(s.group(0)) if s else None
+    if m:
+        r["ratio_at_stop"] = "%.3g" % float(m.group(1))
+    if h:
+        for k, v in zip(("stress_before_Pa", "stress_after_Pa", "change_pct",
+                         "primary_before_pct", "primary_after_pct"), h.groups()):
+            r[k] = "%.4g" % float(v)
+    return r
+
+
+def read_series(work, name):
+    path = os.path.join(work, name, "hold_series.txt")
+    if not os.path.exists(path):
+        return []
+    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
+    step0 = float(rows[0][0])
+    return [(int(float(r[0]) - step0), float(r[1]), float(r[2]), float(r[5]))
+            for r in rows]
+
+
+# the two panels of the figure: what the numerics change, and what sliding does
+PANELS = [("numerics: step, damping, contact law, mass, skin",
+           ["default", "dt0.2", "dt0.1", "zeta0.1", "zeta0.3", "tdamp_off", "local0.7",
+            "local0.7_dt0.1", "mass1e3", "mass1e5", "linear", "skin2e-4"]),
+          ("sliding: friction of grains, walls and lid; rolling",
+           ["default", "mu10", "mu10_dt0.1", "walls_mu10", "side_mu10", "lid_mu10",
+            "wall_mu0", "epsd2", "rolling_off"])]
+
+
+def plot(series, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5), sharey=True)
+    for ax, (title, names) in zip(axes, PANELS):
+        colours = plt.cm.tab20.colors
+        for k, name in enumerate(names):
+            pts = series.get(name)
+            if not pts:
+                continue
+            ax.plot([p[0] for p in pts], [p[2] / 1e3 for p in pts],
+                    color="black" if name == "default" else colours[(2 * k) % 20],
+                    lw=2.5 if name == "default" else 1.2,
+                    ls=["-", "--", ":", "-."][k % 4], marker=".", label=name)
+        ax.set_xlabel("steps with the lid held")
+        ax.set_title(title, fontsize=10)
+        ax.legend(fontsize=7, ncol=2)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("lid stress (kPa)")
+    fig.suptitle("DA Cu 2.5, side 3.3, seed 1, one rank: the lid held after the scene's rest")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--out", default="out/hold_diagnosis")
+    p.add_argument("--rows", nargs="*", help="only these settings")
+    p.add_argument("--hold", type=int, default=20000)
+    p.add_argument("--report-only", action="store_true",
+                   help="tabulate the runs already in OUT")
+    a = p.parse_args()
+    root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+    work = os.path.abspath(a.out)
+    os.makedirs(work, exist_ok=True)
+    rows = [r for r in ROWS if not a.rows or r[0] in a.rows]
+    if not a.report_only:
+        shutil.copy(os.path.join(root, "input_scripts", "in.oedometer"), work)
+        with ThreadPoolExecutor(2) as pool:
+            for name in pool.map(lambda r: run_row(root, work, r, a.hold), rows):
+                print("done", name, flush=True)
+    table = [read_row(work, r) for r in ROWS if os.path.isdir(os.path.join(work, r[0]))]
+    with open(os.path.join(work, "hold_table.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0].keys()))
+        w.writeheader()
+        w.writerows(table)
+    series = {r[0]: read_series(work, r[0]) for r in ROWS}
+    with open(os.path.join(work, "hold_series.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["setting", "steps_held", "time_held_s", "lid_stress_Pa",
+                    "unbalanced_force_ratio"])
+        for name, pts in series.items():
+            for p in pts:
+                w.writerow([name] + list(p))
+    plot(series, os.path.join(work, "hold_diagnosis.png"))
+    for r in table:
+        print("%-15s %-8s %7s %9s %8s %s" % (r["setting"], r["stop"], r["steps_to_stop"],
+                                          r["ratio_at_stop"], r["change_pct"], r["error"]))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
