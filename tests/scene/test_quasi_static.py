@@ -196,6 +196,19 @@ def main():
     expect_error(args, chk, "ratio without balance",
                  base.replace(" balance pf", ""),
                  [r"needs the keyword balance"])
+    # the scene's tolerance of the ratio
+    scene = os.path.join(args.source, "input_scripts", "in.oedometer")
+    res = su.run_launcher(args, scene, log=os.path.join(args.work, "rest_tol.log"),
+                          cwd=args.work, timeout=60,
+                          variables={"rest_tol": "-0.01", "side": "3.3",
+                                     "out": os.path.join(args.work, "rest_tol"),
+                                     "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
+                                     "mesh": os.path.join(args.source, "input_scripts", "meshes", "lid.stl")})
+    err = [l for l in res.text.splitlines() if l.startswith("ERROR")]
+    chk.check("in.oedometer -var rest_tol -0.01: ERROR naming the value and "
+              "what is allowed", not res.crashed() and bool(err) and
+              "rest_tol -0.01" in err[0] and "positive" in err[0],
+              "\n".join(err) or res.describe())
     return chk.finish()
 
 
