@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """The hold diagnosis: what makes the oedometer specimen lose its stress when
-the lid stops (results/creep_diagnosis).
+the lid stops (results/creep_diagnosis); with --study rest, the rest by force
+balance: the unbalanced-force ratio's tolerance, contact and local damping
+against the steps to rest, the answer there and the hold (results/force_balance).
 
 Each row runs input_scripts/in.oedometer (a copy, so that editing the scene
 cannot change a running job) on DA Cu 2.5, side 3.3 (4,188 grains), seed 1,
@@ -48,6 +50,26 @@ ROWS = [
     ("lid_mu10", ["mu_lid", "10"], "no sliding on the lid"),
     ("skin2e-4", ["skin", "2e-4"], "neighbour skin 4 times the default 5e-5 m"),
 ]
+
+# --study rest: the rule and the damping, two seeds each
+REST_ROWS = [
+    ("%s_seed%d" % (name, seed), var + ["seed", str(seed)], what)
+    for seed in (1, 2)
+    for name, var, what in [
+        ("energy_rule", [], "the scene's defaults: the energy rule, zeta 0.6"),
+        ("zeta0.3_tol1e-2", ["zeta", "0.3", "rest_tol", "0.01"],
+         "rest by the ratio below 0.01, zeta 0.3"),
+        ("zeta0.3_tol1e-3", ["zeta", "0.3", "rest_tol", "0.001"],
+         "rest by the ratio below 0.001, zeta 0.3"),
+        ("local0.7_tol1e-2", ["zeta", "0.1", "damping", "0.7", "rest_tol", "0.01"],
+         "local damping 0.7, zeta 0.1, ratio below 0.01"),
+        ("local0.7_tol1e-3", ["zeta", "0.1", "damping", "0.7", "rest_tol", "0.001"],
+         "local damping 0.7, zeta 0.1, ratio below 0.001"),
+        ("side0_tol1e-2", ["zeta", "0.3", "rest_tol", "0.01", "mu_side", "0"],
+         "frictionless side walls and top, zeta 0.3, ratio below 0.01"),
+    ]] + [
+    ("local%s_tol1e-2_seed1" % a, ["zeta", "0.1", "damping", a, "rest_tol", "0.01", "seed", "1"],
+     "local damping %s, zeta 0.1, ratio below 0.01" % a) for a in ("0.2", "0.5")]
 
 STOP = re.compile(r"^STOP: (at rest|maximum time)[^\n]*?after (\d+) steps[^\n]*", re.M)
 RATIO = re.compile(r"unbalanced-force ratio (\S+)")
@@ -141,6 +163,7 @@ def main():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--out", default="out/hold_diagnosis")
     p.add_argument("--rows", nargs="*", help="only these settings")
+    p.add_argument("--study", choices=("hold", "rest"), default="hold")
     p.add_argument("--hold", type=int, default=20000)
     p.add_argument("--report-only", action="store_true",
                    help="tabulate the runs already in OUT")
@@ -148,17 +171,21 @@ def main():
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
     work = os.path.abspath(a.out)
     os.makedirs(work, exist_ok=True)
-    rows = [r for r in ROWS if not a.rows or r[0] in a.rows]
+    table_rows = ROWS if a.study == "hold" else REST_ROWS
+    rows = [r for r in table_rows if not a.rows or r[0] in a.rows]
     if not a.report_only:
         shutil.copy(os.path.join(root, "input_scripts", "in.oedometer"), work)
         with ThreadPoolExecutor(2) as pool:
             for name in pool.map(lambda r: run_row(root, work, r, a.hold), rows):
                 print("done", name, flush=True)
-    table = [read_row(work, r) for r in ROWS if os.path.isdir(os.path.join(work, r[0]))]
-    with open(os.path.join(work, "hold_table.csv"), "w", newline="") as f:
+    table = [read_row(work, r) for r in table_rows if os.path.isdir(os.path.join(work, r[0]))]
+    with open(os.path.join(work, a.study + "_table.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(table[0].keys()))
         w.writeheader()
         w.writerows(table)
+    if a.study == "rest":
+        report(table)
+        return
     series = {r[0]: read_series(work, r[0]) for r in ROWS}
     with open(os.path.join(work, "hold_series.csv"), "w", newline="") as f:
         w = csv.writer(f)
@@ -168,9 +195,14 @@ def main():
             for p in pts:
                 w.writerow([name] + list(p))
     plot(series, os.path.join(work, "hold_diagnosis.png"))
+    report(table)
+
+
+def report(table):
     for r in table:
-        print("%-15s %-8s %7s %9s %8s %s" % (r["setting"], r["stop"], r["steps_to_stop"],
-                                          r["ratio_at_stop"], r["change_pct"], r["error"]))
+        print("%-24s %-12s %7s %9s %8s %7s %s" % (
+            r["setting"], r["stop"], r["steps_to_stop"], r["ratio_at_stop"],
+            r["change_pct"], r["primary_before_pct"], r["error"]))
 
 
 if __name__ == "__main__":
