@@ -3,7 +3,7 @@
 #ifndef FABRIC_BOX_H
 #define FABRIC_BOX_H
 
-#include "trilateration.h"
+#include "geometry.h"
 
 namespace fabric {
 

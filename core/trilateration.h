@@ -15,14 +15,9 @@
 #include <cmath>
 #include <optional>
 
+#include "geometry.h"
+
 namespace fabric {
-
-using Vec3 = Eigen::Vector3d;
-
-struct Sphere {
-  Vec3 centre;
-  double radius;
-};
 
 // Orthonormal frame of a face; `normal` = ex x ey follows the right-hand
 // rule on the vertex order (1, 2, 3).

@@ -29,7 +29,7 @@
 // not replaced by fines on the spot. Both arrangement rules place a drawn
 // grain on the lowest (nearest) site that fits it; they differ in the draw
 // (and in which face spheres a Fig. 8 grain touches, and the default
-// start), all in the Rule classes of front_packer.cpp, the one place:
+// start), all in the Rule classes of arrangement_rule.cpp, the one place:
 //   discrete  (DA): sizes drawn by number, in random order: fines end up
 //                   between coarse grains, a homogeneous mixture;
 //   layerwise (LA): a graded bed, the sediment of a soil dumped from a
