@@ -50,6 +50,8 @@ ROWS = [
     ("side_mu10", ["mu_side", "10"], "no sliding on the side walls and the top"),
     ("lid_mu10", ["mu_lid", "10"], "no sliding on the lid"),
     ("skin2e-4", ["skin", "2e-4"], "neighbour skin 4 times the default 5e-5 m"),
+    ("hold_zero100", ["hold_zero", "100"],
+     "the defaults, every velocity set to zero every 100 steps of the hold"),
 ]
 
 # --study rest: the rule, its tolerance and the damping (--side 7.7: seeds 1-3
@@ -130,7 +132,7 @@ def read_series(work, name):
 # the two panels of the figure: what the numerics change, and what sliding does
 PANELS = [("numerics: step, damping, contact law, mass, skin",
            ["default", "dt0.2", "dt0.1", "zeta0.1", "zeta0.3", "tdamp_off", "local0.7",
-            "local0.7_dt0.1", "mass1e3", "mass1e5", "linear", "skin2e-4"]),
+            "local0.7_dt0.1", "mass1e3", "mass1e5", "linear", "skin2e-4", "hold_zero100"]),
           ("sliding: friction of grains, walls and lid; rolling",
            ["default", "mu10", "mu10_dt0.1", "walls_mu10", "side_mu10", "lid_mu10",
             "wall_mu0", "epsd2", "rolling_off"])]

@@ -209,6 +209,16 @@ def main():
               "what is allowed", not res.crashed() and bool(err) and
               "rest_tol -0.01" in err[0] and "positive" in err[0],
               "\n".join(err) or res.describe())
+    res = su.run_launcher(args, scene, log=os.path.join(args.work, "hold_zero.log"),
+                          cwd=args.work, timeout=60,
+                          variables={"hold": 1000, "hold_zero": 300,
+                                     "out": os.path.join(args.work, "hold_zero"),
+                                     "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
+                                     "mesh": os.path.join(args.source, "input_scripts", "meshes", "lid.stl")})
+    err = [l for l in res.text.splitlines() if l.startswith("ERROR")]
+    chk.check("in.oedometer -var hold 1000 -var hold_zero 300: ERROR naming both",
+              not res.crashed() and bool(err) and "hold_zero 300" in err[0]
+              and "divides hold 1000" in err[0], "\n".join(err) or res.describe())
     return chk.finish()
 
 
