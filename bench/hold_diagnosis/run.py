@@ -52,6 +52,11 @@ ROWS = [
     ("skin2e-4", ["skin", "2e-4"], "neighbour skin 4 times the default 5e-5 m"),
     ("hold_zero100", ["hold_zero", "100"],
      "the defaults, every velocity set to zero every 100 steps of the hold"),
+    ("hold_zero10", ["hold_zero", "10"], "the same every 10 steps"),
+    ("balanced", ["zeta", "0.3", "rest_tol", "0.01"],
+     "rest at force balance: zeta 0.3, the ratio below 0.01"),
+    ("balanced_zero100", ["zeta", "0.3", "rest_tol", "0.01", "hold_zero", "100"],
+     "rest at force balance, velocities zeroed every 100 steps of the hold"),
 ]
 
 # --study rest: the rule, its tolerance and the damping (--side 7.7: seeds 1-3
@@ -132,7 +137,9 @@ def read_series(work, name):
 # the two panels of the figure: what the numerics change, and what sliding does
 PANELS = [("numerics: step, damping, contact law, mass, skin",
            ["default", "dt0.2", "dt0.1", "zeta0.1", "zeta0.3", "tdamp_off", "local0.7",
-            "local0.7_dt0.1", "mass1e3", "mass1e5", "linear", "skin2e-4", "hold_zero100"]),
+            "local0.7_dt0.1", "mass1e3", "mass1e5", "linear", "skin2e-4"]),
+          ("kinetic energy: velocities zeroed during the hold; force balance",
+           ["default", "hold_zero100", "hold_zero10", "balanced", "balanced_zero100"]),
           ("sliding: friction of grains, walls and lid; rolling",
            ["default", "mu10", "mu10_dt0.1", "walls_mu10", "side_mu10", "lid_mu10",
             "wall_mu0", "epsd2", "rolling_off"])]
@@ -142,7 +149,7 @@ def plot(series, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5), sharey=True)
+    fig, axes = plt.subplots(1, 3, figsize=(17, 5), sharey=True)
     for ax, (title, names) in zip(axes, PANELS):
         colours = plt.cm.tab20.colors
         for k, name in enumerate(names):
