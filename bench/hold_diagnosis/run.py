@@ -57,6 +57,8 @@ ROWS = [
      "rest at force balance: zeta 0.3, the ratio below 0.01"),
     ("balanced_zero100", ["zeta", "0.3", "rest_tol", "0.01", "hold_zero", "100"],
      "rest at force balance, velocities zeroed every 100 steps of the hold"),
+    ("balanced_zero100_seed2", ["zeta", "0.3", "rest_tol", "0.01", "hold_zero", "100", "seed", "2"],
+     "the same, seed 2"),
 ]
 
 # --study rest: the rule, its tolerance and the damping (--side 7.7: seeds 1-3
@@ -139,7 +141,8 @@ PANELS = [("numerics: step, damping, contact law, mass, skin",
            ["default", "dt0.2", "dt0.1", "zeta0.1", "zeta0.3", "tdamp_off", "local0.7",
             "local0.7_dt0.1", "mass1e3", "mass1e5", "linear", "skin2e-4"]),
           ("kinetic energy: velocities zeroed during the hold; force balance",
-           ["default", "hold_zero100", "hold_zero10", "balanced", "balanced_zero100"]),
+           ["default", "hold_zero100", "hold_zero10", "balanced", "balanced_zero100",
+            "balanced_zero100_seed2"]),
           ("sliding: friction of grains, walls and lid; rolling",
            ["default", "mu10", "mu10_dt0.1", "walls_mu10", "side_mu10", "lid_mu10",
             "wall_mu0", "epsd2", "rolling_off"])]
