@@ -72,7 +72,9 @@ def rest_rows(seeds):
             ("zeta0.3_tol1e-3", ["zeta", "0.3", "rest_tol", "0.001"],
              "rest by the ratio below 0.001, zeta 0.3", 1),
             ("local0.5_tol1e-2", ["zeta", "0.3", "damping", "0.5", "rest_tol", "0.01"],
-             "local damping 0.5, zeta 0.3, ratio below 0.01", 1)]:
+             "local damping 0.5, zeta 0.3, ratio below 0.01", 1),
+            ("zeta0.3_tol1e-2_zero100", ["zeta", "0.3", "rest_tol", "0.01", "hold_zero", "100"],
+             "ratio below 0.01, zeta 0.3; with --hold 20000 held with velocities zeroed every 100 steps", 1)]:
         rows += [("%s_seed%d" % (name, seed), var + ["seed", str(seed)], what)
                  for seed in range(1, n + 1)]
     return rows
