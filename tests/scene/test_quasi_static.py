@@ -134,6 +134,20 @@ def check_page(args, chk):
                   res.returncode == 0 and not res.errors(), res.describe())
 
 
+def scene_errors(args, name, variables):
+    """The ERROR lines of in.oedometer run with `variables` (it must stop
+    with one at once, without a crash)."""
+    v = dict(variables, out=os.path.join(args.work, name),
+             psd=os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
+             mesh=os.path.join(args.source, "input_scripts", "meshes", "lid.stl"))
+    res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
+                          log=os.path.join(args.work, name + ".log"), cwd=args.work,
+                          timeout=60, variables=v)
+    if res.crashed():
+        return []
+    return [l for l in res.text.splitlines() if l.startswith("ERROR")]
+
+
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
@@ -196,29 +210,13 @@ def main():
     expect_error(args, chk, "ratio without balance",
                  base.replace(" balance pf", ""),
                  [r"needs the keyword balance"])
-    # the scene's tolerance of the ratio
-    scene = os.path.join(args.source, "input_scripts", "in.oedometer")
-    res = su.run_launcher(args, scene, log=os.path.join(args.work, "rest_tol.log"),
-                          cwd=args.work, timeout=60,
-                          variables={"rest_tol": "-0.01", "side": "3.3",
-                                     "out": os.path.join(args.work, "rest_tol"),
-                                     "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
-                                     "mesh": os.path.join(args.source, "input_scripts", "meshes", "lid.stl")})
-    err = [l for l in res.text.splitlines() if l.startswith("ERROR")]
-    chk.check("in.oedometer -var rest_tol -0.01: ERROR naming the value and "
-              "what is allowed", not res.crashed() and bool(err) and
-              "rest_tol -0.01" in err[0] and "positive" in err[0],
-              "\n".join(err) or res.describe())
-    res = su.run_launcher(args, scene, log=os.path.join(args.work, "hold_zero.log"),
-                          cwd=args.work, timeout=60,
-                          variables={"hold": 1000, "hold_zero": 300,
-                                     "out": os.path.join(args.work, "hold_zero"),
-                                     "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
-                                     "mesh": os.path.join(args.source, "input_scripts", "meshes", "lid.stl")})
-    err = [l for l in res.text.splitlines() if l.startswith("ERROR")]
-    chk.check("in.oedometer -var hold 1000 -var hold_zero 300: ERROR naming both",
-              not res.crashed() and bool(err) and "hold_zero 300" in err[0]
-              and "divides hold 1000" in err[0], "\n".join(err) or res.describe())
+    # the scene's own checks of the new variables: an ERROR naming them
+    for name, variables, words in (
+            ("rest_tol", {"rest_tol": "-0.01", "side": "3.3"}, ["rest_tol -0.01", "positive"]),
+            ("hold_zero", {"hold": 1000, "hold_zero": 300}, ["hold_zero 300", "divides hold 1000"])):
+        err = scene_errors(args, name, variables)
+        chk.check("in.oedometer %s: ERROR containing %s" % (variables, words),
+                  bool(err) and all(w in err[0] for w in words), "\n".join(err))
     return chk.finish()
 
 
