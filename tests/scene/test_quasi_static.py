@@ -189,27 +189,24 @@ def main():
     check_page(args, chk)
 
     base = COLUMN.format(preamble=su.preamble(), top="0.00592", alpha="0.5")
-    expect_error(args, chk, "damping 1", base.replace("damping 0.5", "damping 1"),
-                 [r"damping 1\b", r"0 <= alpha < 1"])
-    expect_error(args, chk, "damping -0.1",
-                 base.replace("damping 0.5", "damping -0.1"),
-                 [r"damping -0.1", r"0 <= alpha < 1"])
-    expect_error(args, chk, "damping abc",
-                 base.replace("damping 0.5", "damping abc"),
-                 [r"abc", r"not a number"])
-    expect_error(args, chk, "unknown keyword",
-                 base.replace("damping 0.5", "damping 0.5 speed 3"),
-                 [r"speed", r"damping balance"])
-    expect_error(args, chk, "balance of a missing compute",
-                 base.replace("balance pf", "balance nope"),
-                 [r"nope", r"does not exist"])
-    expect_error(args, chk, "balance of another compute",
-                 base.replace("balance pf", "balance k").replace(
-                     "fix qs", "compute k all ke\nfix qs"),
-                 [r"compute ke", r"primary/fabric"])
-    expect_error(args, chk, "ratio without balance",
-                 base.replace(" balance pf", ""),
-                 [r"needs the keyword balance"])
+    # bad input: (what, the scene edited, patterns the ERROR must match)
+    for what, text, patterns in (
+            ("damping 1", base.replace("damping 0.5", "damping 1"),
+             [r"damping 1\b", r"0 <= alpha < 1"]),
+            ("damping -0.1", base.replace("damping 0.5", "damping -0.1"),
+             [r"damping -0.1", r"0 <= alpha < 1"]),
+            ("damping abc", base.replace("damping 0.5", "damping abc"),
+             [r"abc", r"not a number"]),
+            ("unknown keyword", base.replace("damping 0.5", "damping 0.5 speed 3"),
+             [r"speed", r"damping balance"]),
+            ("balance of a missing compute", base.replace("balance pf", "balance nope"),
+             [r"nope", r"does not exist"]),
+            ("balance of another compute",
+             base.replace("balance pf", "balance k").replace("fix qs", "compute k all ke\nfix qs"),
+             [r"compute ke", r"primary/fabric"]),
+            ("ratio without balance", base.replace(" balance pf", ""),
+             [r"needs the keyword balance"])):
+        expect_error(args, chk, what, text, patterns)
     # the scene's own checks of the new variables: an ERROR naming them
     for name, variables, words in (
             ("rest_tol", {"rest_tol": "-0.01", "side": "3.3"}, ["rest_tol -0.01", "positive"]),
