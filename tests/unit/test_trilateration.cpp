@@ -105,8 +105,12 @@ TEST(Trilateration, TouchesTheThreeSpheresForRandomFaces) {
     // solved exactly when a touching sphere exists (an independent test of
     // existence; faces within 1e-9 of the boundary are not judged)
     const int exists = touching_sphere_exists(s, r4);
-    if (exists == 1) EXPECT_TRUE(m.has_value()) << "trial " << trial << ", r4 " << r4;
-    if (exists == 0) EXPECT_FALSE(m.has_value()) << "trial " << trial << ", r4 " << r4;
+    if (exists == 1) {
+      EXPECT_TRUE(m.has_value()) << "trial " << trial << ", r4 " << r4;
+    }
+    if (exists == 0) {
+      EXPECT_FALSE(m.has_value()) << "trial " << trial << ", r4 " << r4;
+    }
     if (trial % 2 == 0) {
       touching += exists == 1;
       fall_through += exists == 0;
