@@ -1,12 +1,5 @@
 #include "constriction_network.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Regular_triangulation_3.h>
-#include <CGAL/Regular_triangulation_cell_base_3.h>
-#include <CGAL/Regular_triangulation_vertex_base_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <algorithm>
@@ -17,20 +10,10 @@
 #include <string>
 #include <utility>
 
+#include "regular_triangulation.h"
+
 namespace fabric {
 namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<
-    long, K, CGAL::Regular_triangulation_vertex_base_3<K>>;
-// Hidden points are counted, not kept: no memory per hidden sphere.
-using Cb = CGAL::Triangulation_cell_base_with_info_3<
-    long, K,
-    CGAL::Regular_triangulation_cell_base_3<
-        K, CGAL::Triangulation_cell_base_3<K>, CGAL::Discard_hidden_points>>;
-using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
-using RT = CGAL::Regular_triangulation_3<K, Tds>;
-using CellHandle = RT::Cell_handle;
 
 // Union-find over the tetrahedra: the pores.
 struct Pores {
@@ -47,8 +30,6 @@ struct Pores {
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
   }
 };
-
-Vec3 to_vec(const K::Point_3& p) { return Vec3(p.x(), p.y(), p.z()); }
 
 void validate(const std::vector<Sphere>& spheres,
               const ConstrictionOptions& o) {
@@ -71,35 +52,6 @@ void validate(const std::vector<Sphere>& spheres,
     throw std::invalid_argument("the container box is empty");
 }
 
-// The tetrahedra's weighted circumcentres and their four spheres.
-struct Cell {
-  std::array<long, 4> sphere;
-  Vec3 orthocentre;
-};
-
-// CGAL's order of the cells and of the vertices in a cell may change from
-// run to run (it depends on memory addresses); every value computed here
-// takes the spheres in the order of their index, so it does not.
-std::vector<Cell> index_cells(RT& rt) {
-  std::vector<Cell> cells;
-  cells.reserve(rt.number_of_finite_cells());
-  auto centre = rt.geom_traits().construct_weighted_circumcenter_3_object();
-  for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c) {
-    c->info() = static_cast<long>(cells.size());
-    Cell cell;
-    RT::Vertex_handle v[4];
-    for (int k = 0; k < 4; ++k) v[k] = c->vertex(k);
-    std::sort(v, v + 4, [](const auto& a, const auto& b) {
-      return a->info() < b->info();
-    });
-    for (int k = 0; k < 4; ++k) cell.sphere[k] = v[k]->info();
-    cell.orthocentre = to_vec(
-        centre(v[0]->point(), v[1]->point(), v[2]->point(), v[3]->point()));
-    cells.push_back(cell);
-  }
-  return cells;
-}
-
 bool near_wall(const Vec3& p, const Box& b, double m, bool sides_only) {
   for (int a = 0; a < (sides_only ? 2 : 3); ++a)
     if (p[a] < b.lo[a] + m || p[a] > b.hi[a] - m) return true;
@@ -113,36 +65,33 @@ struct Face {
 };
 
 template <class F>
-void for_each_inner_face(RT& rt, F&& f) {
-  for (auto it = rt.finite_facets_begin(); it != rt.finite_facets_end(); ++it) {
-    CellHandle c = it->first, n = c->neighbor(it->second);
-    // on the convex hull (either side may be the infinite cell): no pore pair
-    if (rt.is_infinite(n) || rt.is_infinite(c)) continue;
+void for_each_inner_face(const RegularTriangulation& t, F&& f) {
+  for (const RegularTriangulation::Face& tf : t.faces) {
+    // on the convex hull: no pore pair
+    if (tf.across < 0) continue;
     Face face;
-    for (int k = 0, j = 0; k < 4; ++k)
-      if (k != it->second) face.sphere[j++] = c->vertex(k)->info();
+    face.sphere = tf.vertex;
     std::sort(face.sphere.begin(), face.sphere.end());
-    face.cell_a = std::min(c->info(), n->info());
-    face.cell_b = std::max(c->info(), n->info());
+    face.cell_a = std::min(tf.cell, tf.across);
+    face.cell_b = std::max(tf.cell, tf.across);
     f(face);
   }
 }
 
-void merge_pores(RT& rt, const std::vector<Cell>& cells,
-                 const std::vector<Sphere>& s, const ConstrictionOptions& o,
-                 Pores& pores) {
+void merge_pores(const RegularTriangulation& t, const std::vector<Sphere>& s,
+                 const ConstrictionOptions& o, Pores& pores) {
   std::vector<std::optional<Sphere>> inscribed;
   if (o.merging == PoreMerging::overlap) {
-    inscribed.reserve(cells.size());
-    for (const Cell& c : cells)
-      inscribed.push_back(inscribed_pore_sphere(
-          {s[c.sphere[0]], s[c.sphere[1]], s[c.sphere[2]], s[c.sphere[3]]}));
+    inscribed.reserve(t.cell.size());
+    for (const auto& c : t.cell)
+      inscribed.push_back(
+          inscribed_pore_sphere({s[c[0]], s[c[1]], s[c[2]], s[c[3]]}));
   }
-  for_each_inner_face(rt, [&](const Face& f) {
+  for_each_inner_face(t, [&](const Face& f) {
     double scale = std::max({s[f.sphere[0]].radius, s[f.sphere[1]].radius,
                              s[f.sphere[2]].radius});
-    const Vec3& a = cells[f.cell_a].orthocentre;
-    const Vec3& b = cells[f.cell_b].orthocentre;
+    const Vec3& a = t.orthocentre[f.cell_a];
+    const Vec3& b = t.orthocentre[f.cell_b];
     bool join = (a - b).norm() <= o.coincident_tolerance * scale;
     if (!join && !inscribed.empty()) {
       const auto& p = inscribed[f.cell_a];
@@ -194,26 +143,19 @@ double percolation(long npores, std::vector<std::pair<double, std::pair<long, lo
 // The pores behind the convex hull's bottom (outward normal within 45
 // degrees of -z) and top faces: where a path from the floor to the lid
 // starts and ends.
-void mark_floor_and_lid(RT& rt, const std::vector<long>& pore_of,
+void mark_floor_and_lid(const RegularTriangulation& t,
+                        const std::vector<Sphere>& s,
+                        const std::vector<long>& pore_of,
                         std::vector<char>& floor, std::vector<char>& lid) {
-  for (auto it = rt.finite_facets_begin(); it != rt.finite_facets_end(); ++it) {
-    CellHandle c = it->first;
-    int i = it->second;
-    if (rt.is_infinite(c)) {
-      CellHandle n = c->neighbor(i);
-      i = n->index(c);
-      c = n;
-    } else if (!rt.is_infinite(c->neighbor(i))) {
-      continue;
-    }
-    Vec3 p[3];
-    for (int k = 0, j = 0; k < 4; ++k)
-      if (k != i) p[j++] = to_vec(c->vertex(k)->point().point());
+  for (const RegularTriangulation::Face& f : t.faces) {
+    if (f.across >= 0) continue;
+    const Vec3 p[3] = {s[f.vertex[0]].centre, s[f.vertex[1]].centre,
+                       s[f.vertex[2]].centre};
     Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]);
-    if (n.dot(to_vec(c->vertex(i)->point().point()) - p[0]) > 0.0) n = -n;
+    if (n.dot(s[f.opposite].centre - p[0]) > 0.0) n = -n;
     double nz = n.z() / n.norm();
-    if (nz < -std::sqrt(0.5)) floor[pore_of[c->info()]] = 1;
-    if (nz > std::sqrt(0.5)) lid[pore_of[c->info()]] = 1;
+    if (nz < -std::sqrt(0.5)) floor[pore_of[f.cell]] = 1;
+    if (nz > std::sqrt(0.5)) lid[pore_of[f.cell]] = 1;
   }
 }
 
@@ -330,33 +272,20 @@ std::optional<Sphere> inscribed_pore_sphere(const std::array<Sphere, 4>& s) {
 
 namespace {
 
-// Inserts the spheres as weighted points (r^2); sets the container, the
-// wall margin and the count of hidden spheres.
-void triangulate(RT& rt, const std::vector<Sphere>& spheres,
-                 const ConstrictionOptions& o, ConstrictionNetwork& net) {
+// The container (given, or the spheres' bounding box) and the wall margin
+// (given, or one coarsest diameter).
+void set_container(const std::vector<Sphere>& spheres,
+                   const ConstrictionOptions& o, ConstrictionNetwork& net) {
   Box bb{spheres[0].centre, spheres[0].centre};
   double dmax = 0.0;
-  std::vector<std::pair<RT::Weighted_point, long>> points;
-  points.reserve(spheres.size());
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const Sphere& s = spheres[i];
+  for (const Sphere& s : spheres) {
     Vec3 r = Vec3::Constant(s.radius);
     bb.lo = bb.lo.cwiseMin(s.centre - r);
     bb.hi = bb.hi.cwiseMax(s.centre + r);
     dmax = std::max(dmax, 2.0 * s.radius);
-    points.emplace_back(
-        RT::Weighted_point(K::Point_3(s.centre.x(), s.centre.y(), s.centre.z()),
-                           s.radius * s.radius),
-        static_cast<long>(i));
   }
   net.container = o.container ? *o.container : bb;
   net.wall_margin = o.wall_margin >= 0.0 ? o.wall_margin : dmax;
-  rt.insert(points.begin(), points.end());
-  net.hidden = net.spheres - static_cast<long>(rt.number_of_vertices());
-  if (rt.dimension() < 3)
-    throw std::invalid_argument(
-        "the grains' centres are coplanar (or fewer than 4 are visible to the "
-        "regular triangulation): no pores");
 }
 
 }  // namespace
@@ -366,12 +295,12 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
   validate(spheres, o);
   ConstrictionNetwork net;
   net.spheres = static_cast<long>(spheres.size());
-  RT rt;
-  triangulate(rt, spheres, o, net);
-  std::vector<Cell> cells = index_cells(rt);
-  net.cells = static_cast<long>(cells.size());
+  set_container(spheres, o, net);
+  const RegularTriangulation t = regular_triangulation(spheres);
+  net.hidden = t.hidden;
+  net.cells = static_cast<long>(t.cell.size());
   Pores pores(net.cells);
-  merge_pores(rt, cells, spheres, o, pores);
+  merge_pores(t, spheres, o, pores);
   // Pore numbers 0..npores-1 in the order of their first cell.
   std::vector<long> pore_of(net.cells, -1), root_number(net.cells, -1);
   for (long c = 0; c < net.cells; ++c) {
@@ -382,12 +311,12 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
   std::vector<long> cells_in_pore(net.pores, 0);
   for (long c = 0; c < net.cells; ++c) ++cells_in_pore[pore_of[c]];
   std::vector<char> floor(net.pores, 0), lid(net.pores, 0);
-  mark_floor_and_lid(rt, pore_of, floor, lid);
+  mark_floor_and_lid(t, spheres, pore_of, floor, lid);
   const Box& box = net.container;
   const double m = net.wall_margin;
   std::vector<std::pair<double, std::pair<long, long>>> edges;
   std::map<std::pair<long, long>, std::vector<Opening>> shared;
-  for_each_inner_face(rt, [&](const Face& f) {
+  for_each_inner_face(t, [&](const Face& f) {
     long pa = pore_of[f.cell_a], pb = pore_of[f.cell_b];
     if (pa == pb) return;
     FaceResult r = solve_face(f, spheres);
@@ -414,12 +343,17 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
         ++net.unsolved;
       }
     }
-  // The discs in an order of their own, not CGAL's.
+  // The discs in an order of their own, not CGAL's (which follows memory
+  // addresses): two faces sharing an edge can give the same circle on it, so
+  // the normal breaks the tie.
   std::sort(net.discs.begin(), net.discs.end(),
             [](const ConstrictionDisc& a, const ConstrictionDisc& b) {
               for (int k = 0; k < 3; ++k)
                 if (a.centre[k] != b.centre[k]) return a.centre[k] < b.centre[k];
-              return a.radius < b.radius;
+              if (a.radius != b.radius) return a.radius < b.radius;
+              for (int k = 0; k < 3; ++k)
+                if (a.normal[k] != b.normal[k]) return a.normal[k] < b.normal[k];
+              return false;
             });
   double perc = percolation(net.pores, std::move(edges), floor, lid);
   net.percolation_diameter = std::isfinite(perc) ? perc : 0.0;

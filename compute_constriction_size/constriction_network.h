@@ -2,9 +2,9 @@
 // must pass to move from one pore to the next (see
 // docs/compute_constriction_size.md).
 //
-// Plain C++ on CGAL and Eigen, no LIGGGHTS include. The pore space is split
-// by the regular (power-weighted) Delaunay triangulation of the sphere
-// centres with weights r^2 (CGAL's Regular_triangulation_3); each
+// Plain C++ with Eigen, no LIGGGHTS include. The pore space is split by the
+// regular (power-weighted) Delaunay triangulation of the sphere centres with
+// weights r^2 (core/regular_triangulation.h, the one the pore flow uses); each
 // tetrahedron is a pore. Tetrahedra whose weighted circumcentres coincide
 // (lattices: the octahedral pore of FCC, the cube of simple cubic) are one
 // pore; with PoreMerging::overlap, so are neighbours whose inscribed pore
