@@ -138,7 +138,9 @@ def mpirun_prefix(args, nprocs):
     cmd = [args.mpirun]
     if hasattr(os, "geteuid") and os.geteuid() == 0:
         cmd.append("--allow-run-as-root")
-    cmd += ["--oversubscribe", "-np", str(nprocs)]
+    # (ranks yield the core while they wait: more ranks than cores, or a
+    # second job beside them, no longer spin against each other)
+    cmd += ["--oversubscribe", "--mca", "mpi_yield_when_idle", "1", "-np", str(nprocs)]
     return cmd
 
 

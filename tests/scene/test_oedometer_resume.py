@@ -66,7 +66,7 @@ def main():
         v = dict(VARS, out=out, **extra)
         return su.run_launcher(args, scene, nprocs=nprocs, variables=v,
                                log=os.path.join(args.work, log + ".log"),
-                               cwd=args.source, timeout=300)
+                               cwd=args.source, timeout=600)
 
     # 1. a job that ends with a checkpoint
     out = os.path.join(args.work, "split")
