@@ -19,12 +19,19 @@ namespace {
 // Per-atom column of compute primary/fabric with each grain's loaded
 // contacts (docs/compute_primary_fabric.md, Output info), counted from 0.
 constexpr int kLoadedContactsColumn = 0;
+
+int zero_interval(const StyleArgs &args, int i) {
+  return static_cast<int>(args.integer_in(
+      i, 0, 1000000000,
+      "0: no kinetic damping; N: every grain's velocity set to zero every N "
+      "steps"));
+}
 }  // namespace
 
 FixQuasiStatic::FixQuasiStatic(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), alpha_(0.7) {
   StyleArgs args(error, "Fix quasi/static", narg - 3, arg + 3,
-                 {"damping", "balance"});
+                 {"damping", "zero", "balance"});
   for (int i = 0; i < args.size(); i += 2) {
     const std::string kw = args[i];
     if (kw == "damping") {
@@ -32,6 +39,8 @@ FixQuasiStatic::FixQuasiStatic(LAMMPS *lmp, int narg, char **arg)
       args.require(fabric::valid_local_damping(alpha_), i,
                    "must lie in 0 <= alpha < 1 (0: no damping; PFC's "
                    "default 0.7; 1 would cancel every force along the motion)");
+    } else if (kw == "zero") {
+      zero_every_ = zero_interval(args, i);
     } else if (kw == "balance") {
       fabric_id_ = args.value(i, "the ID of a compute primary/fabric, whose "
                                  "loaded contacts and mean normal force the "
@@ -51,7 +60,17 @@ FixQuasiStatic::FixQuasiStatic(LAMMPS *lmp, int narg, char **arg)
   extvector = 0;
 }
 
-int FixQuasiStatic::setmask() { return PRE_FINAL_INTEGRATE; }
+int FixQuasiStatic::setmask() { return PRE_FINAL_INTEGRATE | END_OF_STEP; }
+
+// fix_modify ID zero N: the kinetic damping's interval changed between runs
+// (the scene's hold zeroes where its loading did not).
+int FixQuasiStatic::modify_param(int narg, char **arg) {
+  if (narg < 1 || strcmp(arg[0], "zero") != 0) return 0;
+  StyleArgs args(error, "Fix_modify quasi/static", narg < 2 ? narg : 2, arg,
+                 {"zero"});
+  zero_every_ = zero_interval(args, 0);
+  return 2;
+}
 
 void FixQuasiStatic::init() {
   fabric_ = nullptr;
@@ -89,6 +108,20 @@ void FixQuasiStatic::pre_final_integrate() {
     if (alpha_ == 0.0) continue;
     fabric::damp_locally(f[i], v[i], alpha_);
     fabric::damp_locally(torque[i], omega[i], alpha_);
+  }
+}
+
+// Kinetic damping (dynamic relaxation): every grain of the group starts the
+// next step at rest. Between two zeroings the grains move under the
+// unbalanced forces alone, so the packing creeps towards force balance
+// without the kinetic energy that would carry it past.
+void FixQuasiStatic::end_of_step() {
+  if (zero_every_ == 0 || update->ntimestep % zero_every_ != 0) return;
+  double **v = atom->v, **omega = atom->omega;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int k = 0; k < 3; ++k) v[i][k] = omega[i][k] = 0.0;
   }
 }
 

@@ -4,7 +4,9 @@
    that calls rest by force balance. A thin adapter: both live in
    core/quasi_static.* (no LIGGGHTS include). The damping acts in
    pre_final_integrate, after every force of the step (pair, walls and any
-   fix's post_force), so the fix may be defined anywhere in the script. */
+   fix's post_force), so the fix may be defined anywhere in the script; the
+   kinetic damping (keyword zero) at the end of a step whose number is a
+   multiple of its interval. */
 
 #ifdef FIX_CLASS
 
@@ -29,6 +31,8 @@ class FixQuasiStatic : public Fix {
   void init();
   void setup(int);
   void pre_final_integrate();
+  void end_of_step();
+  int modify_param(int narg, char **arg);
   double compute_scalar();
   double compute_vector(int i);
 
@@ -36,6 +40,8 @@ class FixQuasiStatic : public Fix {
   void balance();  // the ratio and its parts, once per step
 
   double alpha_;              // local damping coefficient, 0 <= alpha < 1
+  int zero_every_ = 0;        // kinetic damping: velocities zeroed every
+                              // this many steps; 0: never
   std::string fabric_id_;     // compute primary/fabric for the ratio
   class Compute *fabric_ = nullptr;
   std::vector<double> resultant_;  // per local atom: |F| before the damping

@@ -108,6 +108,37 @@ def expect_error(args, chk, what, text, patterns):
               "\n".join(err) or res.describe())
 
 
+def check_zero(args, chk, scene):
+    """Kinetic damping on the page's scene, every sphere set moving at 1 m/s
+    along the walls (whose friction sets the pressed spheres spinning) and
+    run 10 steps of 1e-8 s: with `zero 10` (or `zero 5`)
+    the last step zeroes every velocity and spin, so the kinetic energy
+    printed after it is 0; with `zero 0` and `zero 3` (last zeroing at step
+    9) it is not; `fix_modify qs zero 10` after a fix without zeroing
+    zeroes as the keyword does."""
+    fix_line = [l for l in scene.splitlines() if l.startswith("fix qs ")][0]
+    cases = (("zero 10", fix_line + " zero 10", True),
+             ("zero 5", fix_line + " zero 5", True),
+             ("zero 0", fix_line + " zero 0", False),
+             ("zero 3", fix_line + " zero 3", False),
+             ("fix_modify qs zero 10", fix_line + "\nfix_modify qs zero 10", True))
+    for what, line, still in cases:
+        text = scene.replace(fix_line, line).replace(
+            "thermo_style custom step f_qs f_qs[2] f_qs[3] f_qs[4]\nrun 0",
+            "velocity all set 1 0 0\n"
+            "compute kt all ke\n"
+            "compute kr all erotate/sphere\n"
+            "thermo_style custom step c_kt c_kr\nthermo 10\nrun 10")
+        res = su.run_launcher(args, su.write_file(
+            os.path.join(args.work, "zero_%s.in" % what.replace(" ", "_")), text))
+        row = thermo_row(res.text, 10)
+        ok = row is not None and len(row) == 2 and (
+            (row[0] == 0 and row[1] == 0) if still else (row[0] > 0 and row[1] > 0))
+        chk.check("%s: after 10 steps the translational and rotational kinetic energy "
+                  "%s (%s)" % (what, "are 0" if still else "are not", row),
+                  ok, res.describe())
+
+
 def check_page(args, chk):
     with open(os.path.join(args.source, "docs", "fix_quasi_static.md")) as f:
         text = f.read()
@@ -127,11 +158,14 @@ def check_page(args, chk):
               abs(row[2] - 450) < 1e-6 and row[3] == 3, row or res.describe())
     fix_line = [l for l in scene.splitlines() if l.startswith("fix qs ")][0]
     for i, line in enumerate(blocks[0].strip().splitlines()):
+        # (a fix_modify line goes after the scene's own fix)
+        new = fix_line + "\n" + line if line.startswith("fix_modify") else line
         res = su.run_launcher(args, su.write_file(
             os.path.join(args.work, "page_line%d.in" % i),
-            scene.replace(fix_line, line).replace(" f_qs f_qs[2] f_qs[3] f_qs[4]", "")))
+            scene.replace(fix_line, new).replace(" f_qs f_qs[2] f_qs[3] f_qs[4]", "")))
         chk.check("the page's one-line example %r runs" % line,
                   res.returncode == 0 and not res.errors(), res.describe())
+    check_zero(args, chk, scene)
 
 
 def scene_errors(args, name, variables):
@@ -198,7 +232,11 @@ def main():
             ("damping abc", base.replace("damping 0.5", "damping abc"),
              [r"abc", r"not a number"]),
             ("unknown keyword", base.replace("damping 0.5", "damping 0.5 speed 3"),
-             [r"speed", r"damping balance"]),
+             [r"speed", r"damping zero balance"]),
+            ("zero -1", base.replace("damping 0.5", "damping 0.5 zero -1"),
+             [r"zero -1", r"every N steps"]),
+            ("zero 2.5", base.replace("damping 0.5", "damping 0.5 zero 2.5"),
+             [r"zero '2.5'", r"not an integer"]),
             ("balance of a missing compute", base.replace("balance pf", "balance nope"),
              [r"nope", r"does not exist"]),
             ("balance of another compute",
@@ -210,7 +248,7 @@ def main():
     # the scene's own checks of the new variables: an ERROR naming them
     for name, variables, words in (
             ("rest_tol", {"rest_tol": "-0.01", "side": "3.3"}, ["rest_tol -0.01", "positive"]),
-            ("hold_zero", {"hold": 1000, "hold_zero": 300}, ["hold_zero 300", "divides hold 1000"])):
+            ("hold_zero", {"hold": 1000, "hold_zero": -5, "side": "3.3"}, ["hold_zero -5", "number of steps"])):
         err = scene_errors(args, name, variables)
         chk.check("in.oedometer %s: ERROR containing %s" % (variables, words),
                   bool(err) and all(w in err[0] for w in words), "\n".join(err))
