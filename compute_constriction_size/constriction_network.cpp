@@ -5,31 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "regular_triangulation.h"
+#include "union_find.h"
 
 namespace fabric {
 namespace {
 
-// Union-find over the tetrahedra: the pores.
-struct Pores {
-  std::vector<long> parent;
-  explicit Pores(long n) : parent(n) {
-    std::iota(parent.begin(), parent.end(), 0L);
-  }
-  long find(long a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void join(long a, long b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+// The pores: sets of tetrahedra.
+using Pores = UnionFind;
 
 void validate(const std::vector<Sphere>& spheres,
               const ConstrictionOptions& o) {
