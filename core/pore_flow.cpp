@@ -203,6 +203,12 @@ struct Network {
 };
 
 constexpr double kCoincidentTolerance = 1e-6;
+// A throat is at least this many hydraulic radii long (FlowEngine's
+// distance correction, with a factor of its own): pore centres that nearly
+// coincide, without merging, would give conductances a million times the
+// others', which slowed conjugate gradients 3.4-fold on 1e4 grains (Cu 2.5)
+// while this floor moves K by 0.03 % there.
+constexpr double kMinLengthInHydraulicRadii = 0.1;
 
 // Joins the cells with coincident orthocentres into pores; an imposed
 // pressure on any of a pore's cells holds for the whole pore.
@@ -262,7 +268,9 @@ Network build_network(const std::vector<Sphere>& s, const PoreFlowOptions& o) {
     if (th.b >= 0)
       th.conductance = throat_conductance(
           th.geometry.fluid_area, th.geometry.hydraulic_radius(),
-          th.geometry.length, o.viscosity);
+          std::max(th.geometry.length,
+                   kMinLengthInHydraulicRadii * th.geometry.hydraulic_radius()),
+          o.viscosity);
     net.throats.push_back(std::move(th));
   }
   return net;

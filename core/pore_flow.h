@@ -14,7 +14,8 @@
 // Per throat, Chareyre et al.'s conductance
 //     g = A_f R_h^2 / (2 mu L)
 // where A_f is the face's fluid area (the polygon minus the spheres' sections
-// in it), L the distance between the two pore centres and R_h the hydraulic
+// in it), L the distance between the two pore centres (at least 0.1 R_h, as
+// FlowEngine's distance correction floors it) and R_h the hydraulic
 // radius of the throat's region Omega: the bipyramid of the face polygon with
 // the two pore centres as apexes, R_h = (fluid volume in Omega) / (sphere
 // surface in Omega). For a circular tube (A = pi a^2, R_h = a / 2) it is
