@@ -75,11 +75,8 @@ void merge_pores(const RegularTriangulation& t, const std::vector<Sphere>& s,
           inscribed_pore_sphere({s[c[0]], s[c[1]], s[c[2]], s[c[3]]}));
   }
   for_each_inner_face(t, [&](const Face& f) {
-    double scale = std::max({s[f.sphere[0]].radius, s[f.sphere[1]].radius,
-                             s[f.sphere[2]].radius});
-    const Vec3& a = t.orthocentre[f.cell_a];
-    const Vec3& b = t.orthocentre[f.cell_b];
-    bool join = (a - b).norm() <= o.coincident_tolerance * scale;
+    bool join = same_pore(t, f.cell_a, f.cell_b, f.sphere, s,
+                          o.coincident_tolerance);
     if (!join && !inscribed.empty()) {
       const auto& p = inscribed[f.cell_a];
       const auto& q = inscribed[f.cell_b];

@@ -202,6 +202,7 @@ struct Network {
   std::vector<Throat> throats;
 };
 
+// As compute constriction/size's default (ConstrictionOptions).
 constexpr double kCoincidentTolerance = 1e-6;
 // A throat is at least this many hydraulic radii long (FlowEngine's
 // distance correction, with a factor of its own): pore centres that nearly
@@ -220,11 +221,7 @@ void merge_coincident(const std::vector<Sphere>& s, Network& net) {
     if (f.across < 0 || net.kind[f.cell] == PoreKind::solid ||
         net.kind[f.across] == PoreKind::solid)
       continue;
-    double scale = 0.0;
-    for (long v : f.vertex)
-      if (!t.is_wall(v)) scale = std::max(scale, s[v].radius);
-    if ((t.orthocentre[f.cell] - t.orthocentre[f.across]).norm() <=
-        kCoincidentTolerance * scale)
+    if (same_pore(t, f.cell, f.across, f.vertex, s, kCoincidentTolerance))
       uf.join(f.cell, f.across);
   }
   net.pore.resize(n);

@@ -21,6 +21,7 @@
 #ifndef FABRIC_REGULAR_TRIANGULATION_H
 #define FABRIC_REGULAR_TRIANGULATION_H
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
@@ -59,6 +60,21 @@ struct RegularTriangulation {
 // The axis (0 x, 1 y, 2 z) and side (0 lo, 1 hi) of wall w.
 inline int wall_axis(int w) { return w / 2; }
 inline int wall_side(int w) { return w % 2; }
+
+// Whether two cells across a face (its three vertices) are one pore: their
+// orthocentres coincide within `tolerance` times the largest radius of the
+// face's spheres. Lattices split one pore into several such cells (FCC's
+// octahedron, the cube of simple cubic); the constrictions and the pore
+// flow both join them.
+inline bool same_pore(const RegularTriangulation& t, long cell_a, long cell_b,
+                      const std::array<long, 3>& face,
+                      const std::vector<Sphere>& spheres, double tolerance) {
+  double scale = 0.0;
+  for (long v : face)
+    if (!t.is_wall(v)) scale = std::max(scale, spheres[v].radius);
+  return (t.orthocentre[cell_a] - t.orthocentre[cell_b]).norm() <=
+         tolerance * scale;
+}
 
 // Throws std::invalid_argument when the visible centres are coplanar (or
 // fewer than 4): no cells. Spheres are assumed valid (finite, r > 0).
