@@ -4,8 +4,9 @@
 //   pore_flow_bench time [max-N] [psd-file]
 //       Cu 2.5 (or the PSD given) at porosity 0.35, DA, seed 1, N = 1e4, 1e5
 //       .. max-N (default 1e5) grains: the packer's seconds against the flow's
-//       (triangulation, network, solve), pores, iterations, K against
-//       Kozeny-Carman with the Sauter diameter.
+//       (triangulation, network, solve) and the triangulation's alone (with
+//       the walls, timed apart), pores, iterations, K against Kozeny-Carman
+//       with the Sauter diameter.
 //   pore_flow_bench export side porosity seed FILE [psd-file]
 //       equal spheres of 1 mm in a cube of `side` diameters, or the PSD's
 //       grains in a cube of `side` d50: FILE gets the box (first line: x0 y0
@@ -24,6 +25,7 @@
 #include "front_packer.h"
 #include "pore_flow.h"
 #include "psd.h"
+#include "regular_triangulation.h"
 
 using namespace fabric;
 
@@ -50,8 +52,8 @@ int time_flow(double max_n, const std::string& psd_path) {
   std::printf("# %s (Cu %.2f), porosity 0.35, discrete, seed 1; water, "
               "1 Pa across the height\n",
               psd_path.c_str(), psd.uniformity_coefficient());
-  std::printf("%9s %9s %8s %8s %9s %7s %10s %9s\n", "grains", "pores", "pack_s",
-              "flow_s", "flow/pack", "cg_its", "K_m2", "K/K_KC");
+  std::printf("%9s %9s %8s %8s %8s %9s %7s %10s %9s\n", "grains", "pores",
+              "pack_s", "flow_s", "tri_s", "flow/pack", "cg_its", "K_m2", "K/K_KC");
   for (double n = 1e4; n <= max_n * 1.001; n *= 10) {
     const double L = std::cbrt(n / per_volume);
     PackingSpec spec = packing_spec(particle_list(intervals, L * L * L, 0.35),
@@ -65,14 +67,17 @@ int time_flow(double max_n, const std::string& psd_path) {
     t0 = std::chrono::steady_clock::now();
     const PoreFlow f = pore_flow(s, o);
     const double flow_s = seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    regular_triangulation(s, o.box);
+    const double tri_s = seconds_since(t0);
     // Kozeny-Carman with the Sauter mean diameter (volume / surface) of the
     // grains, the usual choice for a graded soil.
     double v = 0.0, a = 0.0;
     for (const Sphere& x : s) v += std::pow(x.radius, 3), a += x.radius * x.radius;
     const double d32 = 2.0 * v / a, por = 1.0 - 4.0 / 3.0 * M_PI * v / (L * L * L);
     const double kc = d32 * d32 * std::pow(por, 3) / (180.0 * std::pow(1.0 - por, 2));
-    std::printf("%9zu %9ld %8.2f %8.2f %9.2f %7d %10.3e %9.3f\n", s.size(),
-                f.pores, pack_s, flow_s, flow_s / pack_s, f.iterations,
+    std::printf("%9zu %9ld %8.2f %8.2f %8.2f %9.2f %7d %10.3e %9.3f\n", s.size(),
+                f.pores, pack_s, flow_s, tri_s, flow_s / pack_s, f.iterations,
                 f.permeability, f.permeability / kc);
     std::fflush(stdout);
   }

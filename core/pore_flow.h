@@ -39,7 +39,20 @@
 //             shared among the face's spheres in proportion to their wetted
 //             surface in Omega.
 // Summed over the grains they equal the pressure drop times the cross-section
-// along z (the walls take the rest), which the tests check.
+// along z (the walls take the rest), which the tests check: the normal n,
+// not the line between the pore centres (parallel to it in a power diagram
+// but for its sign where a cell's orthocentre lies outside the cell), is
+// what makes the sum exact.
+//
+// Where we differ from FlowEngine (measured in bench/pore_flow_vs_yade):
+// cells whose orthocentres coincide are one pore (FlowEngine keeps them
+// apart, joined by a throat of zero length that it gives an "infinite"
+// conductance); no conductance is clamped (FlowEngine's clampKValues bounds
+// them by a multiple of a quantity one length unit short of a conductance,
+// so its permeability depends on the unit of length: 2.26 times ours at
+// millimetre grains); the solid angles use atan2 (FlowEngine's 2 atan loses
+// angles above pi sr); the fluid area has no correction for a section that
+// crosses the face's opposite edge (FlowEngine's S0), it is floored at zero.
 #ifndef FABRIC_PORE_FLOW_H
 #define FABRIC_PORE_FLOW_H
 
