@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -253,8 +254,9 @@ TEST(SpecimenPoreFlowVsYade, PermeabilityOfAGradedPackingBesideFlowEngines) {
       Vec3::Zero(), Vec3::Constant(L));
   spec.start = fabric::default_start(spec.arrangement);
   const fabric::PackingResult res = fabric::pack(spec);
-  char tmpl[] = "/tmp/pore_flow_yade_XXXXXX";
-  ASSERT_NE(mkdtemp(tmpl), nullptr);
+  std::string tmpl =
+      (std::filesystem::temp_directory_path() / "pore_flow_yade_XXXXXX").string();
+  ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
   for (double scale : {1.0, 1000.0}) {
     Packing p{{}, Box{spec.lo * scale, spec.hi * scale}, 0.0};
     for (std::size_t i = 0; i < res.centre.size(); ++i)
@@ -276,5 +278,5 @@ TEST(SpecimenPoreFlowVsYade, PermeabilityOfAGradedPackingBesideFlowEngines) {
       EXPECT_LT(yade / ours, 0.95);
     }
   }
-  std::system((std::string("rm -rf ") + tmpl).c_str());
+  std::filesystem::remove_all(tmpl);
 }
