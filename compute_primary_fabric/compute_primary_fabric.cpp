@@ -115,7 +115,7 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
                        {"min_contacts", "force_threshold", "prune",
                         "intervals", "intervals_from", "psd", "walls",
                         "direction_bins", "walls_in_fabric", "max_iterations",
-                        "oz_tolerance", "store_every"});
+                        "oz_tolerance", "store_every", "weight"});
   for (int i = 0; i < narg;) i = read_keyword(args, i);
   if (!psd_file_.empty()) read_psd(args);
 }
@@ -152,6 +152,8 @@ int ComputePrimaryFabric::read_keyword(const StyleArgs &args, int i) {
     options_.oz_tolerance = args.number(i, "a share in [0, 1)");
     args.require(options_.oz_tolerance >= 0.0 && options_.oz_tolerance < 1.0,
                  i, "must lie in [0, 1)");
+  } else if (kw == "weight") {
+    weigh_volume_ = args.choice(i, {"mass", "volume"}) == 1;
   } else if (kw == "store_every") {
     store_every_ = args.integer_in(i, 1, 1000000000);
   } else if (kw == "max_iterations") {
@@ -420,10 +422,19 @@ void ComputePrimaryFabric::collect_particles(Step &step) {
     }
     step.index[i] = static_cast<int>(step.particles.size());
     step.particles.push_back({static_cast<long long>(atom->tag[i]),
-                              atom->radius[i], atom->rmass[i], k});
+                              atom->radius[i], weight(i), k});
   }
   stop_on_bad_index(bad_index, bad_value);
   stop_on_outside(outside, outside_d);
+}
+
+// What a grain weighs in the "by mass" outputs: its mass, or with weight
+// volume its volume (grains of one material whose masses were scaled to
+// lengthen the time step: their real masses go as the volume).
+double ComputePrimaryFabric::weight(int i) const {
+  if (!weigh_volume_) return atom->rmass[i];
+  const double r = atom->radius[i];
+  return 4.0 / 3.0 * M_PI * r * r * r;
 }
 
 void ComputePrimaryFabric::stop_on_bad_index(long long count, double value) {

@@ -55,6 +55,7 @@ class ComputePrimaryFabric : public Compute {
   void grow_peratom();
   void collect_particles(Step &);
   void stop_on_bad_index(long long count, double value);
+  double weight(int i) const;
   void stop_on_outside(long long count, double diameter);
   void warn_nonfinite();
   void collect_contacts(Step &);
@@ -83,6 +84,7 @@ class ComputePrimaryFabric : public Compute {
   bigint analysed_step_;
   fabric::FabricSummary summary_;
   double threshold_force_;
+  bool weigh_volume_ = false;  // weight volume: "by mass" weighs volumes
   int iterations_;
   bool warned_ = false;
 

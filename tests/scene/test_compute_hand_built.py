@@ -233,6 +233,32 @@ def check_outputs(args, chk):
               not wrong, "\n".join(wrong))
 
 
+def check_weight(args, chk):
+    """weight mass | volume on RICH with the column ten times denser (as a
+    density-scaled run makes grains): by mass the column holds 240/269 of
+    the mass (d^3 x density), by volume 24/53 whatever the densities."""
+    for weight, want in (("mass", 100.0 * 240 / 269), ("volume", 100.0 * 24 / 53)):
+        text = COLUMN.format(preamble=su.preamble(), free=RICH_ATOMS,
+                             compute="compute pf all primary/fabric min_contacts 2 "
+                                     "intervals 3 weight " + weight,
+                             dump=os.path.join(args.work, "weight.dump"))
+        text = text.replace("set atom * diameter 0.002 density 2650\n",
+                            "set atom * diameter 0.002 density 2650\n"
+                            "set atom 1*3 density 26500\n"
+                            "set atom 4*5 diameter 0.001 density 2650\n"
+                            "set atom 6 diameter 0.003 density 2650\n")
+        text = re.sub(r"thermo_style custom .*", "thermo_style custom step c_pf[4]", text)
+        inp = su.write_file(os.path.join(args.work, "in.weight_" + weight), text)
+        res = su.run_launcher(args, inp)
+        got = None
+        lines = res.output.splitlines()
+        for k, l in enumerate(lines):
+            if l.split()[:1] == ["Step"] and len(l.split()) == 2:
+                got = float(lines[k + 1].split()[1])
+        chk.check("weight %s: primary %% by mass %s, expected %.6f" % (weight, got, want),
+                  got is not None and abs(got - want) < 1e-6 * want, res.describe())
+
+
 def check_docs_quote_layout(args, chk):
     """The command page's output tables name every entry of the header, in
     its position."""
@@ -310,6 +336,7 @@ def main():
         "contact forces only on multiples of 10")
 
     check_outputs(args, chk)
+    check_weight(args, chk)
     check_docs_quote_layout(args, chk)
 
     # prune iterate with max_iterations 1 on the dangling pair: pass 1 makes
@@ -352,6 +379,7 @@ def main():
         ("oz_tolerance not a number", base + " oz_tolerance tenth", "'tenth' is not a number"),
         ("store_every 0", base + " store_every 0", "store_every 0 must lie in 1..1000000000"),
         ("store_every not an integer", base + " store_every 2.5", "'2.5' is not an integer"),
+        ("unknown weight", base + " weight density", "use mass or volume"),
     ]
     dump = os.path.join(args.work, "bad.dump")
     for what, compute, expect in cases:
