@@ -46,7 +46,7 @@ def read_dump(path):
 def write_data(path, g):
     cls = g["c_pf[2]"]
     d = 2.0 * g["radius"]
-    rho = g["mass"] / (np.pi / 6.0 * d ** 3)
+    rho = outputs.material_mass(g) / (np.pi / 6.0 * d ** 3)
     lo = min(g[a].min() - g["radius"].max() for a in "xyz") - 1e-3
     hi = max(g[a].max() + g["radius"].max() for a in "xyz") + 1e-3
     with open(path, "w") as f:

@@ -45,6 +45,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import outputs  # noqa: E402  (the one reader of the scene's outputs)
+
 
 def last_snapshot(path):
     """Columns of the last snapshot of a LAMMPS text dump, by name."""
@@ -69,7 +72,7 @@ def last_snapshot(path):
 def heights(cols):
     """(radius, mass, primary mask, d_N, height of each centre and of the
     top, in d_N from the lowest grain's bottom)."""
-    z, r, m = cols["z"], cols["radius"], cols["mass"]
+    z, r, m = cols["z"], cols["radius"], outputs.material_mass(cols)
     dn = 2.0 * r.max()
     floor = (z - r).min()
     return (r, m, cols["c_pf[2]"] > 0.5, dn, (z - floor) / dn,

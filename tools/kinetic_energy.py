@@ -28,6 +28,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fabric_layers import last_snapshot  # noqa: E402
+import outputs  # noqa: E402
 
 
 def split(cols, nslices):
@@ -73,13 +74,14 @@ def main():
         print("%.6g %.6g | %.1f | %+.3g | %.3g" % (lo, hi, 100.0 * share, vz, vrms))
     if "c_pf[2]" in cols:
         v2 = cols["vx"] ** 2 + cols["vy"] ** 2 + cols["vz"] ** 2
+        mm = outputs.material_mass(cols)   # the shares of the soil's mass
         for label, s in (("primary", cols["c_pf[2]"] > 0.5),
                          ("loose", cols["c_pf[2]"] <= 0.5)):
             if s.any():
                 k = 0.5 * (m[s] * v2[s]).sum()
                 print("%s: %d grains, %.1f %% of the mass, %.1f %% of the kinetic "
                       "energy, rms speed %.3g m/s" % (label, s.sum(),
-                                                      100.0 * m[s].sum() / m.sum(),
+                                                      100.0 * mm[s].sum() / mm.sum(),
                                                       100.0 * k / total,
                                                       np.sqrt(2.0 * k / m[s].sum())))
 

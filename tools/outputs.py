@@ -173,3 +173,38 @@ def pack_vector_values(text, source=ROOT):
         return None
     names = [e.name for e in pack_vector(source)]
     return dict(zip(names, (float(v) for v in found[-1].split())))
+
+
+def dump_last(path):
+    """The last snapshot of a LAMMPS text dump (dump custom, e.g. the scene's
+    final.dump) as {column name: numpy array}, by the names of its ITEM:
+    ATOMS line."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    heads = [k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS")]
+    if not heads:
+        raise ValueError("%s: no ITEM: ATOMS snapshot" % path)
+    k = heads[-1]
+    names = lines[k].split()[2:]
+    rows = [l.split() for l in lines[k + 1:] if l.strip() and not l.startswith("ITEM")]
+    data = np.array(rows, dtype=float).reshape(len(rows), len(names))
+    return {name: data[:, j] for j, name in enumerate(names)}
+
+
+def primary_volume_percent(snapshot):
+    """The primary fabric's share of the grains' volume, % (c_pf[2] 1:
+    primary), from a dump_last snapshot with radius and c_pf[2]: the share
+    by mass of grains of one material whatever their masses were scaled to."""
+    v = snapshot["radius"] ** 3
+    return 100.0 * v[snapshot["c_pf[2]"] == 1].sum() / v.sum()
+
+
+def material_mass(snapshot):
+    """Each grain's mass as its material has it, from a snapshot with radius
+    and mass: its volume times the density of the coarsest grain. The
+    scene's grains are of one material, and its `dt_gain` makes the finest
+    ones denser to lengthen the time step (the coarsest keep their mass), so
+    the dumped masses are the integrator's, not the soil's."""
+    r, m = snapshot["radius"], snapshot["mass"]
+    k = int(np.argmax(r))
+    return m[k] * (r / r[k]) ** 3
