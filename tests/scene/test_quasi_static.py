@@ -16,7 +16,9 @@ of the work done on it.
 
 The command page's examples (docs/fix_quasi_static.md) run as written: the
 complete scene prints what the sentence after it says, and each one-line
-fix runs in it.
+fix runs in it. The kinetic damping (zero N, fix_modify ID zero N) leaves
+no kinetic energy at a step that is a multiple of N and leaves it at
+others (check_zero).
 """
 import os
 import re
