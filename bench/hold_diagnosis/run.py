@@ -23,7 +23,11 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 from concurrent.futures import ThreadPoolExecutor
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import outputs  # noqa: E402
 
 # name, the setting moved (LIGGGHTS -var pairs), what it tests
 ROWS = [
@@ -80,6 +84,62 @@ def rest_rows(seeds):
     return rows
 
 
+def kinetic_rows(seeds):
+    """Kinetic damping (-var zero N, -var hold_zero N): zeroed while loading,
+    against loaded at zeta 0.3 to a ratio and then relaxed with the lid held
+    and the velocities zeroed every 100 steps (run with --hold N)."""
+    rows = []
+    base = ["zeta", "0.3"]
+    relax = ["hold_zero", "100"]
+    for name, var, what, n in [
+            ("zeta0.3_tol1e-2", base + ["rest_tol", "0.01"],
+             "zeta 0.3, rest by the ratio below 0.01", seeds),
+            ("zeta0.3_tol1e-3", base + ["rest_tol", "0.001"],
+             "zeta 0.3, rest by the ratio below 0.001", seeds),
+            ("zero100_tol1e-2", base + ["zero", "100", "rest_tol", "0.01"],
+             "zeta 0.3, velocities zeroed every 100 steps while loading, ratio below 0.01",
+             seeds),
+            ("relax_tol1e-1", base + ["rest_tol", "0.1"] + relax,
+             "zeta 0.3, servo to a ratio below 0.1, then the lid held and the velocities "
+             "zeroed every 100 steps", seeds),
+            ("relax_tol3e-2", base + ["rest_tol", "0.03"] + relax,
+             "the same from a ratio below 0.03", seeds),
+            ("relax_tol1e-2", base + ["rest_tol", "0.01"] + relax,
+             "the same from a ratio below 0.01", seeds),
+            ("relax_tol1e-3", base + ["rest_tol", "0.001"] + relax,
+             "the same from a ratio below 0.001", seeds),
+            ("early_tol5e-2", base + ["rest_tol", "0.05", "pf_tol", "100"] + relax,
+             "zeta 0.3, servo until the lid stress is on target over a block and the "
+             "ratio below 0.05 (primary fraction not waited for), then relaxed", seeds),
+            ("early_tol1e-2", base + ["rest_tol", "0.01", "pf_tol", "100"] + relax,
+             "the same with the ratio below 0.01", seeds),
+            ("balance_tol1e-4", base + ["rest_tol", "1e-4"],
+             "the scene's rest by force balance: servo to load_tol 0.01, then relaxed "
+             "until the ratio is below 1e-4 (the thermo has the crossing of 1e-3)", seeds),
+            ("energy_rule_zeta0.6", ["zeta", "0.6", "rest_tol", "0"],
+             "the former defaults: rest by the kinetic-energy limit under the servo, zeta 0.6",
+             seeds),
+            ("dt_gain1_tol1e-3", base + ["rest_tol", "1e-3", "dt_gain", "1"],
+             "rest by force balance to 1e-3, one density", seeds),
+            ("dt_gain2_tol1e-3", base + ["rest_tol", "1e-3", "dt_gain", "2"],
+             "rest by force balance to 1e-3 with the finest grains made denser, "
+             "the step 2 times longer", seeds),
+            ("dt_gain4_tol1e-3", base + ["rest_tol", "1e-3", "dt_gain", "4"],
+             "the same, the step 4 times longer", seeds),
+            ("dt_gain4_every1000", base + ["rest_tol", "1e-3", "dt_gain", "4", "every", "1000"],
+             "the step 4 times longer, the servo's checks every 1,000 steps", seeds),
+            ("dt_gain4_tol1e-4", base + ["rest_tol", "1e-4", "dt_gain", "4", "relax_max", "20000"],
+             "the step 4 times longer, relaxed until the ratio is below 1e-4 (at most "
+             "20,000 steps; the thermo has the crossing of 1e-3)", seeds),
+            ("dt_gain8_tol1e-3", base + ["rest_tol", "1e-3", "dt_gain", "8"],
+             "the same, the step 8 times longer", seeds),
+            ("dt_gain16_tol1e-3", base + ["rest_tol", "1e-3", "dt_gain", "16"],
+             "the same, the step 16 times longer", seeds)]:
+        rows += [("%s_seed%d" % (name, seed), var + ["seed", str(seed)], what)
+                 for seed in range(1, n + 1)]
+    return rows
+
+
 STOP = re.compile(r"^STOP: (at rest|maximum time)[^\n]*?after (\d+) steps[^\n]*", re.M)
 RATIO = re.compile(r"unbalanced-force ratio (\S+)")
 FABRIC = re.compile(r"^FABRIC: .*?primary fabric (\S+) % by mass", re.M)
@@ -98,8 +158,11 @@ def run_row(root, work, row, hold, side):
            "-var", "side", str(side), "-var", "hold", str(hold), "-var", "out", out]
     for i in range(0, len(var), 2):
         cmd += ["-var", var[i], var[i + 1]]
+    t0 = time.perf_counter()
     with open(os.path.join(out, "screen.txt"), "w") as f:
         subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+    with open(os.path.join(out, "wall_s.txt"), "w") as f:
+        f.write("%.1f\n" % (time.perf_counter() - t0))
     return name
 
 
@@ -114,7 +177,15 @@ def read_row(work, row):
          "ratio_at_stop": "",
          "stress_before_Pa": "", "stress_after_Pa": "", "change_pct": "",
          "primary_before_pct": "", "primary_after_pct": "", "primary_final_pct": "",
+         "primary_volume_pct": "", "wall_s": "",
          "error": err.group(1)[:120] if err else ""}
+    final = os.path.join(work, name, "final.dump")
+    if os.path.exists(final):
+        r["primary_volume_pct"] = "%.2f" % outputs.primary_volume_percent(
+            outputs.dump_last(final))
+    wall = os.path.join(work, name, "wall_s.txt")
+    if os.path.exists(wall):
+        r["wall_s"] = open(wall).read().strip()
     f = FABRIC.search(text)
     if f:
         r["primary_final_pct"] = "%.2f" % float(f.group(1))
@@ -180,7 +251,8 @@ def main():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--out", default="out/hold_diagnosis")
     p.add_argument("--rows", nargs="*", help="only these settings")
-    p.add_argument("--study", choices=("hold", "rest"), default="hold")
+    p.add_argument("--study", choices=("hold", "rest", "kinetic"), default="hold")
+    p.add_argument("--seeds", type=int, default=3, help="seeds of the rest and kinetic rows")
     p.add_argument("--side", type=float, default=3.3,
                    help="container edge in coarsest diameters (the rest study: 7.7)")
     p.add_argument("--hold", type=int, default=20000)
@@ -190,7 +262,8 @@ def main():
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
     work = os.path.abspath(a.out)
     os.makedirs(work, exist_ok=True)
-    table_rows = ROWS if a.study == "hold" else rest_rows(3)
+    table_rows = {"hold": ROWS, "rest": rest_rows(a.seeds),
+                  "kinetic": kinetic_rows(a.seeds)}[a.study]
     rows = [r for r in table_rows if not a.rows or r[0] in a.rows]
     if not a.report_only:
         shutil.copy(os.path.join(root, "input_scripts", "in.oedometer"), work)
@@ -202,7 +275,10 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(table[0].keys()))
         w.writeheader()
         w.writerows(table)
-    if a.study == "rest":
+    if a.study == "kinetic":
+        chart(table, os.path.join(work, "rest_chart.png"),
+              "DA Cu 2.5, side %g, one rank: the answer against the cost of rest" % a.side)
+    if a.study != "hold":
         report(table)
         return
     series = {r[0]: read_series(work, r[0]) for r in ROWS}
@@ -217,11 +293,40 @@ def main():
     report(table)
 
 
+def chart(table, path, title):
+    """Speed against accuracy: the answer (primary % of the volume) against
+    the steps to rest, one marker per run, one colour per setting."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    groups = {}
+    for r in table:
+        if r["stop"] != "at rest" or not r["primary_volume_pct"]:
+            continue
+        groups.setdefault(r["setting"].rsplit("_seed", 1)[0], []).append(
+            (int(r["steps_to_stop"]), float(r["primary_volume_pct"]), float(r["wall_s"] or "nan")))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharey=True)
+    for k, (name, pts) in enumerate(sorted(groups.items())):
+        m = "os^vD<>ph*"[k % 10]
+        for ax, col in zip(axes, (0, 2)):
+            ax.plot([p[col] for p in pts], [p[1] for p in pts], m, ms=8, label=name)
+    axes[0].set_xlabel("steps to rest")
+    axes[1].set_xlabel("wall time to rest, one rank (s; two runs side by side)")
+    axes[0].set_ylabel("primary fabric, % of the grains' volume")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    axes[1].legend(fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 def report(table):
     for r in table:
-        print("%-24s %-12s %7s %9s %8s %7s %s" % (
+        print("%-28s %-12s %7s %9s %8s %7s %7s %7s %s" % (
             r["setting"], r["stop"], r["steps_to_stop"], r["ratio_at_stop"],
-            r["change_pct"], r["primary_final_pct"], r["error"]))
+            r["change_pct"], r["primary_final_pct"], r["primary_volume_pct"],
+            r["wall_s"], r["error"]))
 
 
 if __name__ == "__main__":
