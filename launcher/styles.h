@@ -13,6 +13,7 @@
 #include "command_psd_info.h"
 #include "compute_constriction_size.h"
 #include "compute_primary_fabric.h"
+#include "fix_pore_flow.h"
 #include "fix_quasi_static.h"
 #include "fix_sequential_pack.h"
 
@@ -41,7 +42,8 @@ using ComputeCreator =
 
 inline std::vector<std::pair<std::string, FixCreator>> fixes() {
   return {{"sequential/pack", &make_fix<LAMMPS_NS::FixSequentialPack>},
-          {"quasi/static", &make_fix<LAMMPS_NS::FixQuasiStatic>}};
+          {"quasi/static", &make_fix<LAMMPS_NS::FixQuasiStatic>},
+          {"pore/flow", &make_fix<LAMMPS_NS::FixPoreFlow>}};
 }
 
 inline std::vector<std::pair<std::string, ComputeCreator>> computes() {

@@ -11,6 +11,8 @@ for every tool and test:
   compute constriction/size
                           compute_constriction_size/constriction_outputs.h
                           CONSTRICTION_VECTOR_ENTRIES (global vector)
+  fix pore/flow           fix_pore_flow/pore_flow_outputs.h
+                          PORE_FLOW_VECTOR_ENTRIES (global vector)
 
 Each table is one X(position, name, "meaning") per line, positions from 1
 as c_ID[I] and f_ID[I] count them. Also here: the output files of
@@ -208,3 +210,14 @@ def material_mass(snapshot):
     r, m = snapshot["radius"], snapshot["mass"]
     k = int(np.argmax(r))
     return m[k] * (r / r[k]) ** 3
+
+
+# ---- fix pore/flow ----------------------------------------------------------
+
+PORE_FLOW_HEADER = os.path.join("fix_pore_flow", "pore_flow_outputs.h")
+
+
+def pore_flow_vector(source=ROOT):
+    """fix pore/flow: the entries of the global vector."""
+    return read_table(os.path.join(source, PORE_FLOW_HEADER),
+                      "PORE_FLOW_VECTOR_ENTRIES")
