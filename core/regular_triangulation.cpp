@@ -9,7 +9,9 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace fabric {
@@ -87,16 +89,37 @@ Vec3 orthocentre_at_walls(const std::array<long, 4>& v,
   return lu.isInvertible() ? Vec3(lu.solve(rhs)) : Vec3(mean / 4.0);
 }
 
-// Cells numbered in CGAL's order, vertices sorted: every value computed
-// from a cell takes its spheres in the order of their index, so it does not
-// depend on CGAL's order (which follows memory addresses).
+// Cells numbered in the order of their sorted vertex indices, faces in the
+// order of (cell, opposite vertex): every value computed from a cell takes
+// its spheres in the order of their index, and every loop over cells or
+// faces runs in an order that depends on the spheres alone, not on CGAL's
+// (which follows memory addresses), so a solve over them rounds alike in
+// every run and on every rank.
 void index_cells(RT& rt, const std::vector<Sphere>& spheres,
                  RegularTriangulation& t) {
   const long n = static_cast<long>(spheres.size());
-  t.cell.reserve(rt.number_of_finite_cells());
-  auto centre = rt.geom_traits().construct_weighted_circumcenter_3_object();
+  std::vector<std::array<long, 4>> ids_of;
+  ids_of.reserve(rt.number_of_finite_cells());
   for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c) {
-    c->info() = static_cast<long>(t.cell.size());
+    c->info() = static_cast<long>(ids_of.size());
+    std::array<long, 4> ids;
+    for (int k = 0; k < 4; ++k) ids[k] = c->vertex(k)->info();
+    std::sort(ids.begin(), ids.end());
+    ids_of.push_back(ids);
+  }
+  std::vector<long> order(ids_of.size()), rank(ids_of.size());
+  std::iota(order.begin(), order.end(), 0L);
+  std::sort(order.begin(), order.end(),
+            [&](long a, long b) { return ids_of[a] < ids_of[b]; });
+  for (long k = 0; k < static_cast<long>(order.size()); ++k) rank[order[k]] = k;
+  std::vector<CellHandle> handle(ids_of.size());
+  for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c) {
+    c->info() = rank[c->info()];
+    handle[c->info()] = c;
+  }
+  auto centre = rt.geom_traits().construct_weighted_circumcenter_3_object();
+  t.cell.reserve(handle.size());
+  for (const CellHandle& c : handle) {
     RT::Vertex_handle v[4];
     for (int k = 0; k < 4; ++k) v[k] = c->vertex(k);
     std::sort(v, v + 4, [](const auto& a, const auto& b) {
@@ -114,7 +137,7 @@ void index_cells(RT& rt, const std::vector<Sphere>& spheres,
     }
   }
   t.neighbour.assign(t.cell.size(), {-1, -1, -1, -1});
-  for (auto c = rt.finite_cells_begin(); c != rt.finite_cells_end(); ++c) {
+  for (const CellHandle& c : handle) {
     const auto& ids = t.cell[c->info()];
     for (int k = 0; k < 4; ++k) {
       CellHandle nb = c->neighbor(k);
@@ -143,6 +166,9 @@ void index_faces(RT& rt, RegularTriangulation& t) {
       if (k != i) f.vertex[j++] = c->vertex(k)->info();
     t.faces.push_back(f);
   }
+  std::sort(t.faces.begin(), t.faces.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.cell, a.opposite) < std::tie(b.cell, b.opposite);
+  });
 }
 
 }  // namespace
