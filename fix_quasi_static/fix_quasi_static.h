@@ -36,6 +36,11 @@ class FixQuasiStatic : public Fix {
   double compute_scalar();
   double compute_vector(int i);
 
+  // for fix servo/rest, which runs the protocol on this fix's mechanics
+  class Compute *balance_compute() const { return fabric_; }
+  int zero_every() const { return zero_every_; }
+  void set_zero_every(int n) { zero_every_ = n; }
+
  private:
   void balance();  // the ratio and its parts, once per step
 

@@ -15,6 +15,7 @@
 #include "compute_primary_fabric.h"
 #include "fix_pore_flow.h"
 #include "fix_quasi_static.h"
+#include "fix_servo_rest.h"
 #include "fix_sequential_pack.h"
 
 namespace fabric_styles {
@@ -43,6 +44,7 @@ using ComputeCreator =
 inline std::vector<std::pair<std::string, FixCreator>> fixes() {
   return {{"sequential/pack", &make_fix<LAMMPS_NS::FixSequentialPack>},
           {"quasi/static", &make_fix<LAMMPS_NS::FixQuasiStatic>},
+          {"servo/rest", &make_fix<LAMMPS_NS::FixServoRest>},
           {"pore/flow", &make_fix<LAMMPS_NS::FixPoreFlow>}};
 }
 

@@ -83,28 +83,25 @@ def run_scene(rundir, variables, ranks=1):
             resume = True
             continue
         break
-    text = open(screen, errors="replace").read()
-    stop = re.search(r"^STOP: (at rest|maximum time).*?after (\d+) steps.*?"
-                     r"lid stress ([0-9.eE+-]+) Pa", text, re.M)
-    fab = re.search(r"^FABRIC: loose ([0-9.eE+-]+) % by number, primary fabric "
-                    r"([0-9.eE+-]+) % by mass, OZ .* holding ([0-9.eE+-]+) % of the mass", text, re.M)
-    grains = re.search(r"with (\d+) atoms", text)
-    if not (stop and fab):
-        sys.stderr.write("no STOP/FABRIC line: see %s/screen.txt\n" % rundir)
-        return None
-    row = {"wall_s": "%.1f" % wall, "steps": stop.group(2),
-           "at_rest": "yes" if stop.group(1) == "at rest" else "no",
-           "lid_stress_Pa": "%.0f" % float(stop.group(3)),
-           "primary_mass_pct": "%.2f" % float(fab.group(2)),
-           "loose_number_pct": "%.2f" % float(fab.group(1)),
-           "oz_mass_pct": "%.2f" % float(fab.group(3)),
-           "grains": grains.group(1) if grains else ""}
+    # the result by name: the protocol's (rest.txt) and the compute's
+    # (fabric_global.txt), as tools/outputs.py reads them
+    rest = outputs.read_rest(os.path.join(rundir, "rest.txt"))
     v = outputs.read_global(os.path.join(rundir, "fabric_global.txt"))
+    if rest is None or v is None or not rest["ended"]:
+        sys.stderr.write("no result (rest.txt, fabric_global.txt): see %s/screen.txt\n" % rundir)
+        return None
     pos = outputs.index(outputs.fabric_vector())
-    for field, name, fmt in (("oz_tolerant_mass_pct", "overlapping_zone_tolerant_percent", "%.2f"),
+    row = {"wall_s": "%.1f" % wall, "steps": "%d" % rest["steps"],
+           "at_rest": "yes" if rest["phase_name"] == "at rest" else "no",
+           "lid_stress_Pa": "%.0f" % rest["rest_stress"],
+           "grains": "%d" % v[pos["particles"]]}
+    for field, name, fmt in (("primary_mass_pct", "primary_percent_by_mass", "%.2f"),
+                             ("loose_number_pct", "loose_percent_by_number", "%.2f"),
+                             ("oz_mass_pct", "overlapping_zone_percent", "%.2f"),
+                             ("oz_tolerant_mass_pct", "overlapping_zone_tolerant_percent", "%.2f"),
                              ("fabric_anisotropy", "fabric_anisotropy", "%.4f"),
                              ("force_anisotropy", "force_anisotropy", "%.4f")):
-        row[field] = fmt % v[pos[name]] if v is not None else ""
+        row[field] = fmt % v[pos[name]]
     return row
 
 

@@ -33,6 +33,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), 
 FABRIC_HEADER = os.path.join("compute_primary_fabric", "fabric_outputs.h")
 PACK_HEADER = os.path.join("fix_sequential_pack", "pack_outputs.h")
 CONSTRICTION_HEADER = os.path.join("compute_constriction_size", "constriction_outputs.h")
+REST_HEADER = os.path.join("fix_quasi_static", "rest_outputs.h")
 
 Entry = namedtuple("Entry", "position name meaning")
 
@@ -210,6 +211,38 @@ def material_mass(snapshot):
     r, m = snapshot["radius"], snapshot["mass"]
     k = int(np.argmax(r))
     return m[k] * (r / r[k]) ** 3
+
+
+# ---- fix servo/rest ---------------------------------------------------------
+
+REST_PHASES = ("loading", "relaxing", "at rest", "maximum loading time",
+               "maximum relaxation")
+
+
+def rest_vector(source=ROOT):
+    """fix servo/rest: the entries of the global vector."""
+    return read_table(os.path.join(source, REST_HEADER), "SERVO_REST_VECTOR_ENTRIES")
+
+
+def read_rest(path, source=ROOT):
+    """The protocol's result, rest.txt (fix servo/rest's vector written by
+    fix ave/time in mode vector when the loading ends), as {entry name:
+    value} with names from rest_outputs.h, plus 'step' and 'phase_name';
+    None if the file is missing or holds no complete block."""
+    if not os.path.exists(path):
+        return None
+    blocks = vector_blocks(path)
+    if not blocks:
+        return None
+    step, rows = blocks[-1]
+    entries = rest_vector(source)
+    if len(rows) != len(entries):
+        raise ValueError("%s: %d rows, fix servo/rest has %d entries"
+                         % (path, len(rows), len(entries)))
+    out = {e.name: rows[e.position - 1][1] for e in entries}
+    out["step"] = step
+    out["phase_name"] = REST_PHASES[int(out["phase"])]
+    return out
 
 
 # ---- fix pore/flow ----------------------------------------------------------

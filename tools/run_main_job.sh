@@ -20,7 +20,7 @@ bash tools/build.sh
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mkdir -p out
 mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -log out/oedometer.log "$@" \
-  | grep --line-buffered -E "^(psd_info|MATERIAL|STIFFNESS|BEFORE LOADING|TIMESTEP|DAMPING|SERVO|KE LIMIT|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity by volume:|packed full|^ +Step +t_load|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ " \
+  | grep --line-buffered -E "^(psd_info|MATERIAL|STIFFNESS|BEFORE LOADING|TIMESTEP|DAMPING|SERVO|KE LIMIT|LOADED|RELOAD|STOP|LID|FABRIC|WARNING)|fix sequential/pack|particles:|porosity by volume:|packed full|^ +Step +t_load|^ +[0-9]+ +[0-9.e+-]+ +[0-9.e+-]+ " \
   | awk '/^WARNING: *$/ || /\(\.\/src\// { next } /^ +Step +t_load/ { if (seen[$0]++) next } { print; fflush() }'
 /usr/bin/python3 tools/plot_fabric.py out/oedometer
 echo "ParaView: out/oedometer/grains_*.vtk (colour by c_pf[2]: 1 primary fabric, 0 loose), out/oedometer/contacts_*.vtp"

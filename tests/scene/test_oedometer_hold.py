@@ -43,12 +43,12 @@ def main():
         return chk.finish()
     loaded = re.search(r"^LOADED: .*unbalanced-force ratio (\S+) \(load_tol 0.01\)", res.text, re.M)
     stop = re.search(r"^STOP: at rest after (\d+) steps .*: (\d+) of loading, (\d+) of "
-                     r"relaxation with the lid held; unbalanced-force ratio (\S+) \(rest_tol 1e-3\)",
+                     r"relaxation with the lid held; unbalanced-force ratio (\S+) \(rest_tol (\S+)\)",
                      res.text, re.M)
     chk.check("the servo hands over below load_tol 0.01 (LOADED) and the relaxation "
               "ends below rest_tol 1e-3 (STOP), its steps those of both phases",
               loaded and stop and float(loaded.group(1)) < 0.01
-              and float(stop.group(4)) < 1e-3
+              and float(stop.group(4)) < 1e-3 and float(stop.group(5)) == 1e-3
               and int(stop.group(1)) == int(stop.group(2)) + int(stop.group(3)),
               (stop.group(0) if stop else res.text[-2000:]))
     hold = re.search(r"^HOLD: lid held (\d+) steps: lid stress (\S+) Pa before .*?, "
