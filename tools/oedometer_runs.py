@@ -45,14 +45,20 @@ def run_scene(rundir, variables, ranks=1):
     wall_file = os.path.join(rundir, "wall_s.txt")
     resume = (os.path.exists(os.path.join(rundir, "checkpoint.restart"))
               and os.path.exists(scene) and os.path.exists(screen))
+    # the scene and its parts are copied, so that a resumed job runs the
+    # scene it began with
+    parts = os.path.join(rundir, "oedometer")
     if not resume:
         shutil.copyfile(os.path.join(ROOT, "input_scripts", "in.oedometer"), scene)
+        shutil.rmtree(parts, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "input_scripts", "oedometer"), parts)
         if os.path.exists(wall_file):
             os.remove(wall_file)
     wall = float(open(wall_file).read()) if resume and os.path.exists(wall_file) else 0.0
     while True:
         cmd = [os.path.join(ROOT, "build", "liggghts-fabric"), "-in", scene,
-               "-log", os.path.join(rundir, "log.lammps"), "-var", "out", rundir]
+               "-log", os.path.join(rundir, "log.lammps"), "-var", "out", rundir,
+               "-var", "parts", parts]
         for k, val in variables.items():
             cmd += ["-var", k, str(val)]
         cmd += ["-var", "resume", "1" if resume else "0"]

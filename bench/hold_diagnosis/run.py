@@ -155,6 +155,7 @@ def run_row(root, work, row, hold, side):
            "-log", os.path.join(out, "log.lammps"),
            "-var", "psd", root + "/input_scripts/psd/cu2.5.txt",
            "-var", "mesh", root + "/input_scripts/meshes/lid.stl",
+           "-var", "parts", root + "/input_scripts/oedometer",
            "-var", "side", str(side), "-var", "hold", str(hold), "-var", "out", out]
     for i in range(0, len(var), 2):
         cmd += ["-var", var[i], var[i + 1]]

@@ -34,6 +34,21 @@ import outputs  # noqa: E402
 import soils  # noqa: E402
 
 
+# ---- the oedometer scene -------------------------------------------------
+
+def oedometer_text(source):
+    """input_scripts/in.oedometer and the parts it includes
+    (input_scripts/oedometer/*.in), as one text: what the scene runs."""
+    scripts = os.path.join(source, "input_scripts")
+    parts = sorted(os.path.join(scripts, "oedometer", f)
+                   for f in os.listdir(os.path.join(scripts, "oedometer")) if f.endswith(".in"))
+    text = ""
+    for path in [os.path.join(scripts, "in.oedometer")] + parts:
+        with open(path) as f:
+            text += f.read() + "\n"
+    return text
+
+
 # ---- command line --------------------------------------------------------
 
 def parse_args(description):

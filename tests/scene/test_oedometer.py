@@ -100,7 +100,7 @@ SCENE_POSITIONS = [
 def check_scene_positions(args, chk):
     """The scene's c_pf[N] and f_pack[N] name the entries it means."""
     outputs = su.outputs
-    text = open(os.path.join(args.source, "input_scripts", "in.oedometer")).read()
+    text = su.oedometer_text(args.source)
     pf = {e.position: e.name for e in outputs.fabric_vector(args.source)}
     pack = {e.position: e.name for e in outputs.pack_vector(args.source)}
     wrong = []
@@ -162,8 +162,7 @@ def main():
     vel = np.stack([grains.col(c) for c in ("vx", "vy", "vz")], axis=1)
     # the lid's contacts damp with gn_wall, the fixed walls' with the grains' G_n
     gn_wall = float(re.search(r"^variable gn_wall\s+index\s+(\S+)",
-                              open(os.path.join(args.source, "input_scripts",
-                                                "in.oedometer")).read(), re.M).group(1))
+                              su.oedometer_text(args.source), re.M).group(1))
     gn_grain = float(re.search(r"DAMPING: G_n = ([-0-9.eE+]+) 1/s", text).group(1))
     walls = [(x, (1, 0, 0)), (L - x, (-1, 0, 0)), (y, (0, 1, 0)),
              (L - y, (0, -1, 0)), (L - z, (0, 0, -1)), (z - zlid, (0, 0, 1))]

@@ -175,7 +175,8 @@ def scene_errors(args, name, variables):
     with one at once, without a crash)."""
     v = dict(variables, out=os.path.join(args.work, name),
              psd=os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
-             mesh=os.path.join(args.source, "input_scripts", "meshes", "lid.stl"))
+             mesh=os.path.join(args.source, "input_scripts", "meshes", "lid.stl"),
+             parts=os.path.join(args.source, "input_scripts", "oedometer"))
     res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
                           log=os.path.join(args.work, name + ".log"), cwd=args.work,
                           timeout=60, variables=v)

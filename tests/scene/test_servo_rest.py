@@ -29,12 +29,10 @@ no stress.
 """
 import os
 import re
-import sys
 
 import scene_util as su
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import outputs  # noqa: E402
+outputs = su.outputs
 
 
 def page(args):
