@@ -213,6 +213,53 @@ def material_mass(snapshot):
     return m[k] * (r / r[k]) ** 3
 
 
+# ---- the oedometer scene's time series ---------------------------------------
+
+# fabric_series.txt, one row per block of in.oedometer: (the word of the
+# file's column line, the name the tools use). The scene's title2 must
+# name exactly these columns (tests/scene/test_oedometer.py checks it).
+SERIES_COLUMNS = (
+    ("step", "step"),
+    ("KE_translation(J)", "ke_translation"),
+    ("sigma_lid_block_mean(Pa)", "lid_stress"),
+    ("stress_error_block_rms", "stress_error_rms"),
+    ("loose%number", "loose_number_pct"),
+    ("primary%mass", "primary_mass_pct"),
+    ("coordination", "coordination"),
+    ("OZ%mass", "oz_mass_pct"),
+    ("unbalanced_force_ratio", "unbalanced_force_ratio"),
+)
+
+
+def series_header(path):
+    """The column words of a series file's '# step ...' line, or None."""
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            words = line[1:].split()
+            if words and words[0] == "step":
+                return words
+    return None
+
+
+def read_series(path):
+    """fabric_series.txt as {name: numpy array}, names of SERIES_COLUMNS
+    (the first row is before loading: the packer's geometric contacts).
+    ValueError if the file's column line is not SERIES_COLUMNS' or it holds
+    no row."""
+    words = series_header(path)
+    want = [w for w, _ in SERIES_COLUMNS]
+    if words != want:
+        raise ValueError("%s: columns %s, expected %s (tools/outputs.py SERIES_COLUMNS)"
+                         % (path, words, want))
+    rows = [[float(x) for x in r] for r in data_rows(path)]
+    if not rows or min(len(r) for r in rows) != len(want):
+        raise ValueError("%s: no rows of %d numbers" % (path, len(want)))
+    a = np.array(rows)
+    return {name: a[:, i] for i, (_, name) in enumerate(SERIES_COLUMNS)}
+
+
 # ---- fix servo/rest ---------------------------------------------------------
 
 REST_PHASES = ("loading", "relaxing", "at rest", "maximum loading time",

@@ -54,8 +54,6 @@ import outputs  # noqa: E402  (the compute's output tables)
 
 PROG = "plot_fabric.py"
 
-SERIES_COLS = ["step", "KE(J)", "sigma_lid(Pa)", "loose%number",
-               "primary%mass", "coordination", "OZ%mass"]
 
 VEC = outputs.index(outputs.fabric_vector())   # 0-based entry by name
 TENSOR = ("xx", "yy", "zz", "xy", "xz", "yz")
@@ -70,44 +68,12 @@ def warn(msg):
 
 
 # ---------------------------------------------------------------- reading
-def _title_columns(path):
-    """Column names from the '# step ...' / '# row ...' title line, if any."""
-    with open(path) as f:
-        for line in f:
-            if not line.startswith("#"):
-                break
-            words = line[1:].split()
-            if words and words[0].lower() in ("step", "row", "timestep"):
-                if words[0] == "TimeStep":
-                    continue
-                return words
-    return None
-
-
-def _data_lines(path):
-    with open(path) as f:
-        for line in f:
-            s = line.strip()
-            if s and not s.startswith("#"):
-                yield s.split()
-
-
 def read_series(path):
-    """fix ave/time scalar-mode file -> dict name -> 1-D array."""
-    names = _title_columns(path) or SERIES_COLS
-    rows = []
-    for w in _data_lines(path):
-        try:
-            rows.append([float(x) for x in w])
-        except ValueError:
-            raise InputError("%s: cannot read the line '%s'" % (path, " ".join(w)))
-    if not rows:
-        raise InputError("%s: no data rows (the run wrote no output step yet)" % path)
-    ncol = min(len(r) for r in rows)
-    data = np.array([r[:ncol] for r in rows])
-    if len(names) < ncol:
-        names = names + SERIES_COLS[len(names):ncol]
-    return {names[i]: data[:, i] for i in range(ncol)}
+    """fabric_series.txt -> {column name of outputs.SERIES_COLUMNS: array}."""
+    try:
+        return outputs.read_series(path)
+    except (ValueError, OSError) as e:
+        raise InputError(str(e))
 
 
 def read_intervals(path):
@@ -404,10 +370,10 @@ def main(argv=None):
         os.path.dirname(os.path.abspath(a.outdirs[0])), "fabric_plots"))
     os.makedirs(pngdir, exist_ok=True)
     written = []
-    fig_series(runs, "loose%number", "loose particles, % by number",
+    fig_series(runs, "loose_number_pct", "loose particles, % by number",
                "Fig. 11: loose particles by number", "fig11_loose_number.png",
                pngdir, written)
-    fig_series(runs, "primary%mass", "primary fabric, % by mass",
+    fig_series(runs, "primary_mass_pct", "primary fabric, % by mass",
                "Fig. 12: primary fabric fraction by mass", "fig12_primary_mass.png",
                pngdir, written)
     fig_per_interval(runs, "loaded_contacts_per_particle",

@@ -95,11 +95,7 @@ def loose_before_loading(rundir):
     path = os.path.join(rundir, "fabric_series.txt")
     if not os.path.exists(path):
         return float("nan")
-    for line in open(path):
-        w = line.split()
-        if w and not line.startswith("#"):
-            return float(w[4])
-    return float("nan")
+    return float(outputs.read_series(path)["loose_number_pct"][0])
 
 
 def stats(values):

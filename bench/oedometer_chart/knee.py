@@ -21,8 +21,12 @@ import argparse
 import csv
 import os
 import re
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import outputs  # noqa: E402
 
 LOOSER = [1.4e-4, 2e-4, 3e-4, 5e-4]
 
@@ -42,9 +46,10 @@ def stop_index(s, limit, tol=0.05, pf_tol=1.0):
     """The scene's rule: KE below limit, block rms stress error below tol,
     primary % moved less than pf_tol over the last two blocks."""
     p = [-100.0, -200.0, -300.0]
-    for i in range(1, len(s)):
-        p = [s[i, 5], p[0], p[1]]
-        if s[i, 1] < limit and s[i, 3] < tol and abs(p[0] - p[1]) + abs(p[1] - p[2]) < pf_tol:
+    primary, ke, err = s["primary_mass_pct"], s["ke_translation"], s["stress_error_rms"]
+    for i in range(1, len(primary)):
+        p = [primary[i], p[0], p[1]]
+        if ke[i] < limit and err[i] < tol and abs(p[0] - p[1]) + abs(p[1] - p[2]) < pf_tol:
             return i
     return None
 
@@ -67,15 +72,16 @@ def main():
                              loose_number_pct=r["loose_number_pct"], at_rest=r["at_rest"]))
             if not looser:
                 continue
-            s = np.loadtxt(os.path.join(rundir, "fabric_series.txt"))
+            s = outputs.read_series(os.path.join(rundir, "fabric_series.txt"))
             lim = ke_limit(rundir)
             for w in LOOSER:
                 i = stop_index(s, lim * (w / v) ** 2)
                 if i is None:
                     continue
                 rows.append(dict(seed=r["seed"], ke_vrms="%g" % w, source="series", wall_s="",
-                                 steps="%d" % s[i, 0], primary_mass_pct="%.2f" % s[i, 5],
-                                 loose_number_pct="%.2f" % s[i, 4], at_rest="yes"))
+                                 steps="%d" % s["step"][i],
+                                 primary_mass_pct="%.2f" % s["primary_mass_pct"][i],
+                                 loose_number_pct="%.2f" % s["loose_number_pct"][i], at_rest="yes"))
     rows.sort(key=lambda r: (float(r["ke_vrms"]), r["source"], int(r["seed"])))
     os.makedirs(os.path.dirname(a.csv) or ".", exist_ok=True)
     with open(a.csv, "w", newline="") as f:

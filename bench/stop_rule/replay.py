@@ -27,6 +27,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import outputs  # noqa: E402
+
 RULES = [  # (name, ke_vrms factor over the run's, pf_tol, stress_tol)
     ("reference", 1.0, 1.0, 0.05),
     ("ke x1.5", 1.5, 1.0, 0.05),
@@ -50,13 +53,10 @@ def read_run(rundir):
     ke = re.search(r"^KE LIMIT: (\S+) J", text, re.M)
     grains = re.search(r"^FABRIC: .*", text, re.M)
     atoms = re.findall(r"with (\d+) atoms", text)
-    rows = []
-    for line in open(series):
-        if line.startswith("#"):
-            continue
-        v = line.split()
-        if len(v) >= 6 and int(float(v[0])) > 0:
-            rows.append((int(float(v[0])), float(v[1]), float(v[3]), float(v[5])))
+    s = outputs.read_series(series)
+    rows = [(int(st), ke, err, pf) for st, ke, err, pf in
+            zip(s["step"], s["ke_translation"], s["stress_error_rms"], s["primary_mass_pct"])
+            if st > 0]
     if not ke or not rows or not grains or not atoms:
         return None
     return int(atoms[-1]), float(ke.group(1)), rows

@@ -135,6 +135,19 @@ def main():
     sigma = float(m.group(1)) if m else float("nan")
     chk.check("lid stress %.0f Pa within 5 %% of %.0f Pa" % (sigma, STRESS),
               abs(sigma / STRESS - 1) < 0.05)
+    # the outputs the tools read by name: the series' columns are
+    # outputs.SERIES_COLUMNS, rest.txt is fix servo/rest's vector
+    try:
+        series = su.outputs.read_series(os.path.join(out, "fabric_series.txt"))
+        rest = su.outputs.read_rest(os.path.join(out, "rest.txt"))
+        ok = (rest is not None and rest["phase_name"] == "at rest"
+              and int(series["step"][-1]) == int(rest["steps"])
+              and abs(rest["rest_stress"] / sigma - 1) < 1e-5)
+        why = (list(series), rest)
+    except ValueError as e:
+        ok, why = False, str(e)
+    chk.check("fabric_series.txt has the columns of outputs.SERIES_COLUMNS, its last row the "
+              "step of rest.txt (fix servo/rest's vector: at rest, the STOP line's stress)", ok, why)
 
     # Independent recount.
     lid = re.search(r"LID: z_lid ([-0-9.eE+]+) m, container edge ([-0-9.eE+]+) m", text)

@@ -180,11 +180,11 @@ def main():
               warnings or res.describe())
     moved = re.search(r"^STOP: maximum time .* primary fabric moved (\S+) points over the last "
                       r"two blocks", res.text, re.M)
-    # the change as the series file has it: the primary % by mass (column 6)
-    # of the last three checks
-    rows = (su.outputs.data_rows(os.path.join(out, "fabric_series.txt"))
-            if os.path.exists(os.path.join(out, "fabric_series.txt")) else [])
-    last3 = [float(r[5]) for r in rows[-3:]]
+    # the change as the series file has it: the primary % by mass of the
+    # last three checks
+    path = os.path.join(out, "fabric_series.txt")
+    rows = list(su.outputs.read_series(path)["primary_mass_pct"]) if os.path.exists(path) else []
+    last3 = rows[-3:]
     want = abs(last3[2] - last3[1]) + abs(last3[1] - last3[0]) if len(last3) == 3 else None
     chk.check("stopped by t_max after many blocks: the STOP line gives the primary fabric's "
               "change over the last two blocks (%s points), as the series file's last three "

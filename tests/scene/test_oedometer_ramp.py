@@ -27,16 +27,6 @@ STRESS = 1e6
 EVERY = 500
 
 
-def series(out):
-    rows = []
-    with open(os.path.join(out, "fabric_series.txt")) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
-
-
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
@@ -55,22 +45,23 @@ def main():
               m is not None and t_stop >= RAMP)
     chk.check("at rest the lid stress %s Pa is within 0.05 of %g Pa" % (sigma_stop, STRESS),
               abs(sigma_stop / STRESS - 1) < 0.05)
-    rows = series(out) if os.path.exists(os.path.join(out, "fabric_series.txt")) else []
-    # rows: step, KE, sigma block mean, error rms, ...; the first row is before loading
+    path = os.path.join(out, "fabric_series.txt")
+    lid = list(su.outputs.read_series(path)["lid_stress"]) if os.path.exists(path) else []
+    # the lid stress's block means; the first row is before loading
     dt_block = None
     m = re.search(r"^TIMESTEP: .* dt = (\S+) s", res.text, re.M)
     if m:
         dt_block = float(m.group(1)) * EVERY
-    loaded = rows[1:]
-    chk.check("the series has a row per block (%d rows) and the time step is printed" % len(rows),
+    loaded = lid[1:]
+    chk.check("the series has a row per block (%d rows) and the time step is printed" % len(lid),
               len(loaded) >= 3 and dt_block is not None)
     if len(loaded) >= 3 and dt_block is not None:
-        first = loaded[0][2]
+        first = loaded[0]
         chk.check("first block (t up to %.4f s, target up to %.0f %% of the stress): lid stress "
                   "%.0f Pa, below a tenth of %g Pa" % (dt_block, 100 * (0.01 + dt_block / RAMP), first, STRESS),
                   0 < first < 0.1 * STRESS)
         k_after = next((k for k in range(len(loaded)) if (k + 1) * dt_block >= RAMP + dt_block), None)
-        after = loaded[k_after][2] if k_after is not None else float("nan")
+        after = loaded[k_after] if k_after is not None else float("nan")
         chk.check("block %s, the first wholly after the ramp: lid stress %.0f Pa, within 25 %% of %g Pa"
                   % (k_after, after, STRESS), abs(after / STRESS - 1) < 0.25)
     return chk.finish()

@@ -43,11 +43,7 @@ VARS = {"every": 2000, "side": 2.75, "kn": 2e7}
 
 
 def series_steps(path):
-    steps = []
-    for line in open(path):
-        if line.strip() and not line.startswith("#"):
-            steps.append(int(line.split()[0]))
-    return steps
+    return [int(x) for x in su.outputs.read_series(path)["step"]]
 
 
 def fabric(text):
@@ -137,11 +133,9 @@ def main():
 
     # 4. an early resume: the lid's speed handed to the servo
     def block(path, step):
-        for line in open(path):
-            w = line.split()
-            if w and not line.startswith("#") and int(w[0]) == step:
-                return float(w[2]), float(w[3])
-        return None
+        s = su.outputs.read_series(path)
+        hit = [i for i, st in enumerate(s["step"]) if int(st) == step]
+        return (s["lid_stress"][hit[0]], s["stress_error_rms"][hit[0]]) if hit else None
     early = os.path.join(args.work, "early")
     e1 = run(early, {"checkpoint": 1, "t_max": 0.004}, log="early1")
     ck_in = open(os.path.join(early, "checkpoint.in")).read() if os.path.isfile(

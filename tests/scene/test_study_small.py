@@ -70,12 +70,10 @@ def main():
         chk.check("%s: lid stress %.0f Pa within 5 %% of 100 kPa"
                   % (name, stress),
                   abs(stress - 1e5) <= 5e3)
-        series = np.array([[float(x) for x in l.split()]
-                           for l in open(os.path.join(rundir, "fabric_series.txt"))
-                           if l.strip() and not l.startswith("#")])
-        loose0 = series[0, 4]
+        series = su.outputs.read_series(os.path.join(rundir, "fabric_series.txt"))
+        loose0 = series["loose_number_pct"][0]
         chk.check("%s: %.1f %% loose before loading (< 20 %%)" % (name, loose0),
-                  series[0, 0] == 0 and loose0 < 20)
+                  series["step"][0] == 0 and loose0 < 20)
         loose = float(row["loose_number_pct"])
         primary_mass = float(row["primary_mass_pct"])
         chk.check("%s: %.1f %% loose by number under load (> 50 %%)" % (name, loose),

@@ -256,8 +256,7 @@ def main():
     # kinetic energy at its last check and the CSV's primary share
     for row in rows:
         rundir = os.path.join(args.work, "runs", row["name"])
-        series = [l.split() for l in open(os.path.join(rundir, "fabric_series.txt"))
-                  if l.strip() and not l.startswith("#")]
+        series = su.outputs.read_series(os.path.join(rundir, "fabric_series.txt"))
         p6 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "kinetic_energy.py"),
                              os.path.join(rundir, "final.dump"), "--slices", "4"],
                             cwd=args.source, capture_output=True, text=True, timeout=120)
@@ -266,7 +265,7 @@ def main():
                           p6.stdout, re.M)
         prim = re.search(r"^primary: \d+ grains, (\S+) % of the mass", p6.stdout, re.M)
         ke = float(tot.group(1)) if tot else float("nan")
-        want = float(series[-1][1]) if series else float("nan")
+        want = float(series["ke_translation"][-1])
         split_sum = float(parts.group(1)) + float(parts.group(2)) if parts else float("nan")
         chk.check("%s: kinetic_energy: %.4g J (the last check's %.4g J), slices' mean + about "
                   "%.4g J, primary %s %% of the mass (CSV %s)"
