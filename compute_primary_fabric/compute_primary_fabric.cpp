@@ -86,7 +86,7 @@ ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
   pair_->do_store_contact_forces_every(static_cast<int>(every));
 
   peratom_flag = 1;
-  size_peratom_cols = 3;
+  size_peratom_cols = fabric::kPeratomColumns;
   vector_flag = 1;
   size_vector = fabric::vector_size(options_.direction_bins);
   extvector = 0;
@@ -404,7 +404,7 @@ void ComputePrimaryFabric::collect_particles(Step &step) {
   long long outside = 0, bad_index = 0;
   double outside_d = 0.0, bad_value = 0.0;
   for (int i = 0; i < nlocal; ++i) {
-    peratom_[i][0] = peratom_[i][1] = peratom_[i][2] = 0.0;
+    for (int c = 0; c < fabric::kPeratomColumns; ++c) peratom_[i][c] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
     const double d = 2.0 * atom->radius[i];
     int k = 0;
@@ -583,9 +583,12 @@ void ComputePrimaryFabric::classify(const Step &step) {
   for (int i = 0; i < atom->nlocal; ++i) {
     if (step.index[i] < 0) continue;
     const int p = step.index[i];
-    peratom_[i][0] = cls.loaded_contacts[p];
-    peratom_[i][1] = cls.fraction[p] == fabric::Fraction::primary ? 1.0 : 0.0;
-    peratom_[i][2] = step.particles[p].interval + 1;
+    using fabric::PeratomColumn;
+    double *row = peratom_[i];
+    row[fabric::peratom_column(PeratomColumn::loaded_contacts)] = cls.loaded_contacts[p];
+    row[fabric::peratom_column(PeratomColumn::primary)] =
+        cls.fraction[p] == fabric::Fraction::primary ? 1.0 : 0.0;
+    row[fabric::peratom_column(PeratomColumn::interval)] = step.particles[p].interval + 1;
   }
 }
 

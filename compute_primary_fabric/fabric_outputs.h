@@ -51,6 +51,13 @@
   X(30, r2_tolerant, "r2 with oz_tolerance: coarsest interval above it in loose mass") \
   X(31, overlapping_zone_tolerant_percent, "overlapping zone with oz_tolerance, % of the mass")
 
+// Per-atom array: one row per atom, these columns (0 for an atom outside
+// the group).
+#define FABRIC_PERATOM_COLUMNS(X)                                              \
+  X(1, loaded_contacts, "loaded contacts of the particle (particles and walls)") \
+  X(2, primary, "class: 1 primary fabric, 0 loose or outside the group")      \
+  X(3, interval, "size interval, 1 the finest (0 outside the group)")
+
 // Global array: one row per size interval (row 1 the finest), these columns.
 #define FABRIC_ARRAY_COLUMNS(X)                                                \
   X(1, diameter, "representative diameter of the interval")                    \
@@ -66,17 +73,25 @@ namespace fabric {
 
 enum class VectorEntry { FABRIC_VECTOR_ENTRIES(FABRIC_OUTPUT_NAME) count };
 enum class ArrayColumn { FABRIC_ARRAY_COLUMNS(FABRIC_OUTPUT_NAME) count };
+enum class PeratomColumn { FABRIC_PERATOM_COLUMNS(FABRIC_OUTPUT_NAME) count };
 
 constexpr int kVectorFixedEntries = static_cast<int>(VectorEntry::count);
 constexpr int kArrayColumns = static_cast<int>(ArrayColumn::count);
+constexpr int kPeratomColumns = static_cast<int>(PeratomColumn::count);
 
 constexpr int kVectorPositions[] = {
     FABRIC_VECTOR_ENTRIES(FABRIC_OUTPUT_POSITION)};
 constexpr int kArrayPositions[] = {FABRIC_ARRAY_COLUMNS(FABRIC_OUTPUT_POSITION)};
+constexpr int kPeratomPositions[] = {FABRIC_PERATOM_COLUMNS(FABRIC_OUTPUT_POSITION)};
 static_assert(counts_from_one(kVectorPositions),
               "fabric_outputs.h: the vector positions must count 1, 2, 3 ...");
 static_assert(counts_from_one(kArrayPositions),
               "fabric_outputs.h: the array positions must count 1, 2, 3 ...");
+static_assert(counts_from_one(kPeratomPositions),
+              "fabric_outputs.h: the per-atom positions must count 1, 2, 3 ...");
+
+// Column c of the per-atom array, counted from 0 as array_atom counts.
+constexpr int peratom_column(PeratomColumn c) { return static_cast<int>(c); }
 
 // Size of the global vector with M direction bins.
 inline int vector_size(int direction_bins) {

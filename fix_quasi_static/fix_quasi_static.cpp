@@ -17,8 +17,9 @@ using namespace FixConst;
 
 namespace {
 // Per-atom column of compute primary/fabric with each grain's loaded
-// contacts (docs/compute_primary_fabric.md, Output info), counted from 0.
-constexpr int kLoadedContactsColumn = 0;
+// contacts (fabric_outputs.h), counted from 0.
+constexpr int kLoadedContactsColumn =
+    fabric::peratom_column(fabric::PeratomColumn::loaded_contacts);
 
 int zero_interval(const StyleArgs &args, int i) {
   return static_cast<int>(args.integer_in(

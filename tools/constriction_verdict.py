@@ -44,7 +44,7 @@ def read_dump(path):
 
 
 def write_data(path, g):
-    cls = g["c_pf[2]"]
+    cls = g[outputs.PRIMARY]
     d = 2.0 * g["radius"]
     rho = outputs.material_mass(g) / (np.pi / 6.0 * d ** 3)
     lo = min(g[a].min() - g["radius"].max() for a in "xyz") - 1e-3
@@ -111,7 +111,7 @@ def figure(path, name, psd, g, csd_p, csd_a, vp):
     ax.plot(psd[0] * 1e3, psd[1], "k-", lw=2, label="PSD (input)")
     total = g["mass"].sum()
     d = 2.0 * g["radius"]
-    prim = g["c_pf[2]"] == 1
+    prim = g[outputs.PRIMARY] == 1
     for sel, lab, st in ((prim, "PFD (primary)", "b-"), (~prim, "LPD (loose)", "r-")):
         x, y = cumulative(d[sel], g["mass"][sel], total)
         ax.step(x * 1e3, y, st, where="post", label=lab)
@@ -188,7 +188,7 @@ def main():
                 for r in c:
                     f.write("%s %.9g %.6f %.6f\n" % (lab, r[0], r[1], r[2]))
         figure(os.path.join(a.dest, "fig_%s.png" % name), name, read_psd(psd), g, csd_p, csd_a, vp)
-        prim = g["c_pf[2]"] == 1
+        prim = g[outputs.PRIMARY] == 1
         table.append({
             "run": name, "grains": len(prim), "primary_grains": int(prim.sum()),
             "primary_mass_percent": round(100 - vp["loose_mass_percent"], 3),

@@ -75,7 +75,7 @@ def heights(cols):
     z, r, m = cols["z"], cols["radius"], outputs.material_mass(cols)
     dn = 2.0 * r.max()
     floor = (z - r).min()
-    return (r, m, cols["c_pf[2]"] > 0.5, dn, (z - floor) / dn,
+    return (r, m, cols[outputs.PRIMARY] > 0.5, dn, (z - floor) / dn,
             ((z + r).max() - floor) / dn)
 
 
@@ -83,7 +83,7 @@ def layers(cols):
     """Rows (label, lo, hi, grains, mass %, primary % of its mass,
     mean diameter / d_N; None for a layer without grains), heights in d_N
     from the floor."""
-    for need in ("z", "radius", "mass", "c_pf[2]"):
+    for need in ("z", "radius", "mass", outputs.PRIMARY):
         if need not in cols:
             raise ValueError("the dump has no column %s" % need)
     for need in ("x", "y"):

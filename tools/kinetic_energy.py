@@ -72,11 +72,11 @@ def main():
     print("slice (z from, to in m) | mass % | mean vz (m/s) | rms speed (m/s)")
     for lo, hi, share, vz, vrms in rows:
         print("%.6g %.6g | %.1f | %+.3g | %.3g" % (lo, hi, 100.0 * share, vz, vrms))
-    if "c_pf[2]" in cols:
+    if outputs.PRIMARY in cols:
         v2 = cols["vx"] ** 2 + cols["vy"] ** 2 + cols["vz"] ** 2
         mm = outputs.material_mass(cols)   # the shares of the soil's mass
-        for label, s in (("primary", cols["c_pf[2]"] > 0.5),
-                         ("loose", cols["c_pf[2]"] <= 0.5)):
+        for label, s in (("primary", cols[outputs.PRIMARY] > 0.5),
+                         ("loose", cols[outputs.PRIMARY] <= 0.5)):
             if s.any():
                 k = 0.5 * (m[s] * v2[s]).sum()
                 print("%s: %d grains, %.1f %% of the mass, %.1f %% of the kinetic "

@@ -60,6 +60,25 @@ def fabric_vector(source=ROOT):
     return read_table(os.path.join(source, FABRIC_HEADER), "FABRIC_VECTOR_ENTRIES")
 
 
+def fabric_peratom(source=ROOT):
+    """compute primary/fabric: the columns of the per-atom array."""
+    return read_table(os.path.join(source, FABRIC_HEADER), "FABRIC_PERATOM_COLUMNS")
+
+
+def peratom_name(name, compute_id="pf", source=ROOT):
+    """The dump column of per-atom column `name` of compute primary/fabric
+    `compute_id`, as LIGGGHTS names it: c_ID[I]."""
+    pos = {e.name: e.position for e in fabric_peratom(source)}
+    if name not in pos:
+        raise ValueError("compute primary/fabric has no per-atom column %s (%s)"
+                         % (name, ", ".join(pos)))
+    return "c_%s[%d]" % (compute_id, pos[name])
+
+
+# the dump column of the class (1 primary, 0 loose) of the scenes' compute pf
+PRIMARY = peratom_name("primary")
+
+
 def fabric_array(source=ROOT):
     """compute primary/fabric: the columns of the global array."""
     return read_table(os.path.join(source, FABRIC_HEADER), "FABRIC_ARRAY_COLUMNS")
@@ -199,7 +218,7 @@ def primary_volume_percent(snapshot):
     primary), from a dump_last snapshot with radius and c_pf[2]: the share
     by mass of grains of one material whatever their masses were scaled to."""
     v = snapshot["radius"] ** 3
-    return 100.0 * v[snapshot["c_pf[2]"] == 1].sum() / v.sum()
+    return 100.0 * v[snapshot[PRIMARY] == 1].sum() / v.sum()
 
 
 def material_mass(snapshot):

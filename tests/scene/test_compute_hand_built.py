@@ -266,7 +266,8 @@ def check_docs_quote_layout(args, chk):
     with open(os.path.join(args.source, "docs", "compute_primary_fabric.md")) as f:
         doc = f.read()
     missing = []
-    for table, entries in (("vector", vec), ("array", cols)):
+    per = su.outputs.fabric_peratom(args.source)
+    for table, entries in (("vector", vec), ("array", cols), ("per-atom", per)):
         for pos, name, meaning in entries:
             row = "| %d | `%s` | %s |" % (pos, name, meaning)
             if row not in doc:
