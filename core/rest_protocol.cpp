@@ -142,7 +142,9 @@ RestDecision RestProtocol::end_of_block(long step, const RestMeasures& m) {
     d.line = "LOADED: " + lid + " over the last block (rms error " + num(block_rms_) +
              ") after " + num(n_load) + " steps (t = " + num(m.t_load) +
              " s), unbalanced-force ratio " + num(m.ratio) + " (load_tol " +
-             num(rule_.load_tol) + "): the lid is held and the grains relaxed " +
+             num(rule_.load_tol) + "): " +
+             (rule_.lid_held ? "the lid is held and the grains relaxed "
+                             : "the grains relaxed under the servo ") +
              "(velocities zeroed every " + num(long(rule_.relax_zero)) +
              " steps) until the ratio is below rest_tol " + num(rule_.rest_tol);
     return d;
@@ -175,29 +177,37 @@ RestDecision RestProtocol::end_of_block(long step, const RestMeasures& m) {
 RestDecision RestProtocol::relax_check(long step, const RestMeasures& m) {
   const long n_relax = relaxed_ + (step - relax_start_);
   const long n_load = step - start_;
-  if (m.ratio < rule_.rest_tol) {
-    rest_stress_ = m.stress_now;
-    const double off = 100.0 * (m.stress_now / m.target - 1.0);
-    const bool off_target = std::fabs(off) > 100.0 * rule_.stress_tol;
+  const double off = 100.0 * (m.stress_now / m.target - 1.0);
+  const bool off_target = std::fabs(off) > 100.0 * rule_.stress_tol;
+  const bool balanced = m.ratio < rule_.rest_tol;
+  // a stress lost while relaxing (reload_early), or relaxed off the
+  // target: the servo takes the lid again
+  if (off_target && (balanced || rule_.reload_early) && reloads_ < rule_.reload_max) {
     relaxed_ = n_relax;
-    if (off_target && reloads_ < rule_.reload_max) {
-      ++reloads_;
-      phase_ = RestPhase::loading;
-      n_ = 0;
-      s_ = e_ = e2_ = 0.0;
-      RestDecision d;
-      d.lid = LidAction::release;
-      d.line = "RELOAD: relaxed, the lid stress is " + num(m.stress_now) + " Pa, " +
-               num(off) + " % from the target (stress_tol " + num(rule_.stress_tol) +
-               "): the servo takes the lid again (" + num(long(reloads_)) +
-               " of at most " + num(long(rule_.reload_max)) + ")";
-      return d;
-    }
+    rest_stress_ = m.stress_now;
+    ++reloads_;
+    phase_ = RestPhase::loading;
+    n_ = 0;
+    s_ = e_ = e2_ = 0.0;
+    RestDecision d;
+    d.lid = LidAction::release;
+    d.line = std::string(balanced ? "RELOAD: relaxed" : "RELOAD: relaxing") +
+             ", the lid stress is " + num(m.stress_now) + " Pa, " + num(off) +
+             " % from the target (stress_tol " + num(rule_.stress_tol) +
+             "), unbalanced-force ratio " + num(m.ratio) +
+             ": the servo takes the lid again (" + num(long(reloads_)) + " of at most " +
+             num(long(rule_.reload_max)) + ")";
+    return d;
+  }
+  if (balanced) {
+    rest_stress_ = m.stress_now;
+    relaxed_ = n_relax;
     RestDecision d = stop(
         step, RestPhase::rest,
         "STOP: at rest after " + num(n_load) + " steps (t = " + num(m.t_load) + " s): " +
             num(n_load - relaxed_) + " of loading, " + num(relaxed_) +
-            " of relaxation with the lid held; unbalanced-force ratio " + num(m.ratio) +
+            " of relaxation" + (rule_.lid_held ? " with the lid held" : " under the servo") +
+            "; unbalanced-force ratio " + num(m.ratio) +
             " (rest_tol " + num(rule_.rest_tol) + "), lid stress " + num(m.stress_now) +
             " Pa (" + num(off) + " % from the target " + num(m.target) +
             " Pa, tolerance " + num(rule_.stress_tol) + "), the servo taken up again " +

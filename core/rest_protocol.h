@@ -34,10 +34,14 @@ struct RestRule {
   double ramp = 0.0;         // no rest before this loading time (s)
   long relax_max = 40000;    // steps of relaxation after which it ends
   int reload_max = 3;        // the servo taken up again at most this often
+  bool reload_early = true;  // ... as soon as a relaxation loses the target,
+                             // not only once it is balanced
   long swing_from = 6000;    // steps of loading before the swing check
   double swing_rms = 0.5;    // a swing: rms error above this ...
   double swing_sd = 0.2;     // ... and spread about the block mean above this
   int relax_zero = 100;      // kinetic damping of the relaxation (steps)
+  bool lid_held = true;      // the relaxation with the lid held where the
+                             // servo had it (true), or under the servo
 };
 
 // "" when the rule can be run, else what is wrong (a keyword and its value).

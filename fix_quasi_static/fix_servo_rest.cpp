@@ -33,7 +33,7 @@ FixServoRest::FixServoRest(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
   StyleArgs args(error, "Fix servo/rest", narg - 5, arg + 5,
                  {"stress", "area", "every", "check", "stress_tol", "load_tol",
                   "rest_tol", "ke_vrms", "pf_tol", "t_max", "ramp", "relax_max",
-                  "reload_max", "relax_zero", "swing_from"});
+                  "reload_max", "reload_early", "relax_zero", "swing_from", "lid"});
   bool have_stress = false;
   for (int i = 0; i < args.size(); i += 2) {
     const std::string kw = args[i];
@@ -79,6 +79,10 @@ FixServoRest::FixServoRest(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
       rule_.relax_max = args.integer_in(i, 1, 2000000000, "steps of relaxation");
     } else if (kw == "reload_max") {
       rule_.reload_max = static_cast<int>(args.integer_in(i, 0, 1000000, "reloads"));
+    } else if (kw == "lid") {
+      rule_.lid_held = args.choice(i, {"servo", "held"}) == 1;
+    } else if (kw == "reload_early") {
+      rule_.reload_early = args.yes_no(i);
     } else if (kw == "relax_zero") {
       rule_.relax_zero = static_cast<int>(
           args.integer_in(i, 0, 1000000000, "0: none; N: velocities zeroed every N steps"));
@@ -204,7 +208,7 @@ void FixServoRest::end_of_step() {
                        "light; lower the servo's kp or vel_max, or raise the "
                        "stress over a loading time (ramp)")
                           .c_str());
-  if (d.lid != fabric::LidAction::none) {
+  if (d.lid != fabric::LidAction::none && rule_.lid_held) {
     char word[] = "servo/integrate";
     char start[] = "start", stop[] = "stop";
     char *a[2] = {word, d.lid == fabric::LidAction::hold ? stop : start};

@@ -11,10 +11,10 @@
 #include "output_table.h"
 
 #define SERVO_REST_VECTOR_ENTRIES(X)                                           \
-  X(1, phase, "0 loading, 1 relaxing with the lid held, 2 at rest, 3 maximum loading time, 4 maximum relaxation") \
+  X(1, phase, "0 loading, 1 relaxing, 2 at rest, 3 maximum loading time, 4 maximum relaxation") \
   X(2, next_run, "steps from now to the fix's next decision: the length of the next run") \
   X(3, steps, "steps since the loading began")                                \
-  X(4, steps_relaxed, "steps of relaxation with the lid held")                \
+  X(4, steps_relaxed, "steps of relaxation")                \
   X(5, reloads, "the servo taken up again after a relaxation")                \
   X(6, blocks, "whole blocks of loading in this job")                         \
   X(7, block_stress, "the last whole block's mean lid stress, Pa")            \

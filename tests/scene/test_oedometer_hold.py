@@ -43,7 +43,7 @@ def main():
         return chk.finish()
     loaded = re.search(r"^LOADED: .*unbalanced-force ratio (\S+) \(load_tol 0.01\)", res.text, re.M)
     stop = re.search(r"^STOP: at rest after (\d+) steps .*: (\d+) of loading, (\d+) of "
-                     r"relaxation with the lid held; unbalanced-force ratio (\S+) \(rest_tol (\S+)\)",
+                     r"relaxation (?:with the lid held|under the servo); unbalanced-force ratio (\S+) \(rest_tol (\S+)\)",
                      res.text, re.M)
     chk.check("the servo hands over below load_tol 0.01 (LOADED) and the relaxation "
               "ends below rest_tol 1e-3 (STOP), its steps those of both phases",

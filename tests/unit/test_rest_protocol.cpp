@@ -105,6 +105,23 @@ TEST(RestProtocol, StressLostInTheRelaxationSendsTheLidBackToTheServo) {
   EXPECT_NE(s.warning.find("still -10 %"), std::string::npos) << s.warning;
 }
 
+TEST(RestProtocol, StressLostBeforeBalanceReloadsAtOnceUnlessToldToWait) {
+  Driver d(small_rule());
+  d.next(100.0, ratio(0.005));  // hold at 10
+  // still off balance (ratio 2e-3 > rest_tol) and 8 % below the target
+  const RestDecision back = d.next(100.0, ratio(2e-3, 92.0));
+  EXPECT_EQ(back.lid, LidAction::release);
+  EXPECT_EQ(back.line.rfind("RELOAD: relaxing, the lid stress is 92 Pa", 0), 0u) << back.line;
+  EXPECT_EQ(d.p.steps_relaxed(), 5);
+  RestRule r = small_rule();
+  r.reload_early = false;
+  Driver wait(r);
+  wait.next(100.0, ratio(0.005));
+  EXPECT_EQ(wait.next(100.0, ratio(2e-3, 92.0)).lid, LidAction::none);
+  EXPECT_EQ(wait.p.phase(), RestPhase::relaxing);
+  EXPECT_EQ(wait.next(100.0, ratio(5e-4, 92.0)).lid, LidAction::release);  // balanced
+}
+
 TEST(RestProtocol, RelaxationThatNeverBalancesEndsAtRelaxMax) {
   Driver d(small_rule());
   d.next(100.0, ratio(0.005));
