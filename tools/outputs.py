@@ -311,6 +311,23 @@ def read_rest(path, source=ROOT):
     return out
 
 
+# ---- the suffusion test's outlet (examples/in.outlet) ----------------------
+
+def read_outlet(path):
+    """The grains fix massflow/mesh wrote as they left through the outlet
+    (its `file` keyword: PATH on one rank, PATH.N on N ranks; columns ID
+    diameter x y z u v w), as {"id": array, "diameter": array} sorted by
+    ID; empty arrays if no grain left."""
+    import glob
+    files = [path] if os.path.exists(path) else sorted(glob.glob(path + ".*"))
+    rows = []
+    for f in files:
+        rows += [r for r in data_rows(f) if len(r) >= 2]
+    rows.sort(key=lambda r: int(r[0]))
+    return {"id": np.array([int(r[0]) for r in rows], dtype=int),
+            "diameter": np.array([float(r[1]) for r in rows])}
+
+
 # ---- fix pore/flow ----------------------------------------------------------
 
 PORE_FLOW_HEADER = os.path.join("fix_pore_flow", "pore_flow_outputs.h")
