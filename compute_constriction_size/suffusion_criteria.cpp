@@ -27,8 +27,15 @@ KezdiResult kezdi(const ParticleSizeDistribution& psd) {
   return r;
 }
 
+double kenney_lau_f_max(double cu) {
+  if (!(cu > 0.0)) return 30.0;
+  const double scale = std::pow(10.0, 2.0 - std::floor(std::log10(cu)));
+  const double stated = std::round(cu * scale) / scale;  // 3 significant figures
+  return stated > 3.0 ? 20.0 : 30.0;
+}
+
 KenneyLauResult kenney_lau(const ParticleSizeDistribution& psd) {
-  const double fmax = psd.uniformity_coefficient() > 3.0 ? 20.0 : 30.0;
+  const double fmax = kenney_lau_f_max(psd.uniformity_coefficient());
   KenneyLauResult r{INFINITY, 0.0, fmax};
   for (double F = 0.5; F <= fmax + 1e-9; F += 0.5) {
     double d = psd.diameter_at_percent(F);

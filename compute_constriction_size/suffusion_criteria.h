@@ -46,6 +46,11 @@ struct KenneyLauResult {
   bool stable() const { return min_ratio >= 1.0; }
 };
 KenneyLauResult kenney_lau(const ParticleSizeDistribution& psd);
+// The bound on F for a uniformity coefficient: 30 for Cu <= 3, else 20, Cu
+// taken to three significant figures, the precision a grading's Cu is
+// stated to (a Cu of 3.0 interpolated from a PSD's points as 3.00001 is
+// narrowly graded).
+double kenney_lau_f_max(double uniformity_coefficient);
 
 // Burenkova (1993), cohesionless sand-gravel soils (d_max up to 100 mm, Cu
 // up to 200): h' = d90/d60, h'' = d90/d15; non-suffusive (zone II) inside

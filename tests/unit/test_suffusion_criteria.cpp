@@ -149,6 +149,20 @@ TEST(SuffusionCriteria, KenneyLauBoundOnFDependsOnCu) {
   EXPECT_EQ(w.f_max, 20.0);
 }
 
+TEST(SuffusionCriteria, KenneyLauCuBoundaryOnTheStatedPrecision) {
+  // Cu to three significant figures: 3.00001 (an interpolated 3.0) is
+  // narrowly graded, 3.01 widely
+  EXPECT_EQ(fabric::kenney_lau_f_max(3.00001), 30.0);
+  EXPECT_EQ(fabric::kenney_lau_f_max(2.999), 30.0);
+  EXPECT_EQ(fabric::kenney_lau_f_max(3.01), 20.0);
+  EXPECT_EQ(fabric::kenney_lau_f_max(12.0), 20.0);
+  // a log-linear grading with Cu 3 (50 / log10(3) % per decade), whose
+  // interpolated Cu is not exactly 3
+  const auto psd = log_linear(50.0 / std::log10(3.0));
+  EXPECT_NEAR(psd.uniformity_coefficient(), 3.0, 1e-3);
+  EXPECT_EQ(fabric::kenney_lau(psd).f_max, 30.0);
+}
+
 TEST(SuffusionCriteria, BurenkovaZonesAtPublishedBoundaries) {
   // h'' = 10: zone II is 0.76 + 1 = 1.76 < h' < 1.86 + 1 = 2.86.
   EXPECT_FALSE(fabric::burenkova(with_ratios(1.70, 10.0)).stable());  // zone I
