@@ -55,7 +55,7 @@ ComputeConstrictionSize::~ComputeConstrictionSize() {
 void ComputeConstrictionSize::parse(int narg, char **arg) {
   const StyleArgs args(error, "Compute constriction/size", narg, arg,
                        {"container", "wall_margin", "merge", "tolerance",
-                        "loose", "fabric", "control", "psd", "csd"});
+                        "loose", "fabric", "control", "control_by", "psd", "csd"});
   for (int i = 0; i < args.size(); i += 2) {
     const std::string kw = args[i];
     if (kw == "container") {
@@ -79,6 +79,9 @@ void ComputeConstrictionSize::parse(int narg, char **arg) {
       loose_bit_ = group->bitmask[g];
     } else if (kw == "fabric") {
       fabric_id_ = args.value(i, "the ID of a compute primary/fabric");
+    } else if (kw == "control_by") {
+      control_weight_ = args.choice(i, {"number", "area"}) == 0 ? fabric::CsdWeight::number
+                                                                 : fabric::CsdWeight::area;
     } else if (kw == "control") {
       control_percent_ = args.number(i, "a percent in [5, 95]");
       args.require(control_percent_ >= 5.0 && control_percent_ <= 95.0, i,
@@ -214,7 +217,7 @@ void ComputeConstrictionSize::analyse() {
 void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net,
                                           const Grains &g) {
   const std::vector<double> v = fabric::constriction_vector(
-      net, control_percent_, g.verdict, criteria_);
+      net, control_percent_, control_weight_, g.verdict, criteria_);
   std::copy(v.begin(), v.end(), vector);
   char m[512];
   if (net.hidden > 0) {

@@ -57,6 +57,7 @@ class ComputeConstrictionSize : public Compute {
   class Compute *fabric_ = nullptr;  // compute primary/fabric (keyword fabric)
   int loose_bit_ = 0;
   double control_percent_ = 35.0;
+  fabric::CsdWeight control_weight_ = fabric::CsdWeight::number;
   bigint analysed_step_ = -1;
   int nrows_ = 0;  // local rows held
 };

@@ -346,7 +346,7 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
 
 std::vector<double> csd_percentiles(const std::vector<ConstrictionDisc>& discs,
                                     const std::vector<double>& percents,
-                                    bool cubic_weight) {
+                                    CsdWeight weight) {
   std::vector<CsdPoint> c = cumulative_csd(discs);
   std::vector<double> out;
   for (double p : percents) {
@@ -354,7 +354,7 @@ std::vector<double> csd_percentiles(const std::vector<ConstrictionDisc>& discs,
       out.push_back(NAN);
       continue;
     }
-    if (!cubic_weight) {  // order statistics, linear between them
+    if (weight == CsdWeight::number) {  // order statistics, linear between them
       double pos = p / 100.0 * (c.size() - 1);
       std::size_t i = static_cast<std::size_t>(std::floor(pos));
       if (i + 1 >= c.size()) {
@@ -365,12 +365,22 @@ std::vector<double> csd_percentiles(const std::vector<ConstrictionDisc>& discs,
       out.push_back(c[i].diameter + t * (c[i + 1].diameter - c[i].diameter));
       continue;
     }
-    // By d^3: the smallest diameter at which the cumulative share reaches p.
+    // Weighted: the smallest diameter at which the cumulative share reaches p.
+    const auto share = [weight](const CsdPoint& q) {
+      return weight == CsdWeight::area ? q.percent_area : q.percent_cubic;
+    };
     std::size_t i = 0;
-    while (i + 1 < c.size() && c[i].percent_cubic < p) ++i;
+    while (i + 1 < c.size() && share(c[i]) < p) ++i;
     out.push_back(c[i].diameter);
   }
   return out;
+}
+
+std::vector<double> csd_percentiles(const std::vector<ConstrictionDisc>& discs,
+                                    const std::vector<double>& percents,
+                                    bool cubic_weight) {
+  return csd_percentiles(discs, percents,
+                         cubic_weight ? CsdWeight::cubic : CsdWeight::number);
 }
 
 std::vector<CsdPoint> cumulative_csd(const std::vector<ConstrictionDisc>& discs) {
@@ -378,14 +388,19 @@ std::vector<CsdPoint> cumulative_csd(const std::vector<ConstrictionDisc>& discs)
   d.reserve(discs.size());
   for (const auto& k : discs) d.push_back(2.0 * k.radius);
   std::sort(d.begin(), d.end());
-  double total = 0.0;
-  for (double x : d) total += x * x * x;
+  double total = 0.0, total_area = 0.0;
+  for (double x : d) {
+    total += x * x * x;
+    total_area += x * x;
+  }
   std::vector<CsdPoint> out;
   out.reserve(d.size());
-  double cum = 0.0;
+  double cum = 0.0, cum_area = 0.0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     cum += d[i] * d[i] * d[i];
-    out.push_back({d[i], 100.0 * (i + 1) / d.size(), 100.0 * cum / total});
+    cum_area += d[i] * d[i];
+    out.push_back({d[i], 100.0 * (i + 1) / d.size(), 100.0 * cum / total,
+                   100.0 * cum_area / total_area});
   }
   return out;
 }

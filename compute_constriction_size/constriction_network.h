@@ -85,17 +85,26 @@ ConstrictionNetwork constriction_network(const std::vector<Sphere>& spheres,
 // none with rho > 0.
 std::optional<Sphere> inscribed_pore_sphere(const std::array<Sphere, 4>& s);
 
-// Diameters below which `percent` of the discs lie (by number, or weighted
-// by diameter^3, as a PSD is by mass); linear between order statistics.
-// `percents` in (0, 100). Empty discs: NaN.
+// How the discs count in a percentile of the CSD: one each, by their area
+// (diameter^2, Indraratna et al.'s controlling constriction), or by
+// diameter^3 (as a PSD is by mass).
+enum class CsdWeight { number, area, cubic };
+
+// Diameters below which `percent` of the discs lie: by number linear between
+// order statistics; weighted, the smallest diameter at which the cumulative
+// share reaches it. `percents` in (0, 100). Empty discs: NaN.
+std::vector<double> csd_percentiles(const std::vector<ConstrictionDisc>& discs,
+                                    const std::vector<double>& percents,
+                                    CsdWeight weight);
+// ... true: CsdWeight::cubic, false: CsdWeight::number
 std::vector<double> csd_percentiles(const std::vector<ConstrictionDisc>& discs,
                                     const std::vector<double>& percents,
                                     bool cubic_weight);
 
-// Cumulative CSD: sorted diameters with the percent finer by number and by
-// diameter^3 at each.
+// Cumulative CSD: sorted diameters with the percent finer by number, by
+// area and by diameter^3 at each.
 struct CsdPoint {
-  double diameter, percent_number, percent_cubic;
+  double diameter, percent_number, percent_cubic, percent_area;
 };
 std::vector<CsdPoint> cumulative_csd(const std::vector<ConstrictionDisc>& discs);
 

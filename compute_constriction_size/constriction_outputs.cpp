@@ -21,6 +21,7 @@ GradingCriteria grading_criteria(const ParticleSizeDistribution& psd) {
 
 std::vector<double> constriction_vector(const ConstrictionNetwork& net,
                                         double control_percent,
+                                        CsdWeight control_weight,
                                         const VerdictGrains& grains,
                                         const GradingCriteria& criteria) {
   using E = ConstrictionEntry;
@@ -36,7 +37,7 @@ std::vector<double> constriction_vector(const ConstrictionNetwork& net,
   }
   v[at(E::percolation)] = net.percolation_diameter;
   const double control =
-      csd_percentiles(net.discs, {control_percent}, false)[0];
+      csd_percentiles(net.discs, {control_percent}, control_weight)[0];
   v[at(E::control)] = control;
   // The verdict: loose grains finer than the controlling constriction and
   // than the percolation opening, by mass.

@@ -60,7 +60,7 @@
   X(38, dc90_cubed, "D_c90 weighted by D_c³")                                  \
   X(39, dc95_cubed, "D_c95 weighted by D_c³")                                  \
   X(40, percolation, "percolation opening (0: no path)")                       \
-  X(41, control, "controlling constriction D_cP (`control`)")                  \
+  X(41, control, "controlling constriction D_cP (`control`, `control_by`)")                  \
   X(42, loose_finer_control_percent, "loose mass finer than entry 41, % of the loose mass") \
   X(43, loose_finer_percolation_percent, "loose mass finer than entry 40, % of the loose mass") \
   X(44, loose_mass_percent, "loose mass, % of the loose and pore-forming mass") \
@@ -123,9 +123,10 @@ struct VerdictGrains {
 
 // The global vector in the table's order (entry I at [I - 1]) of the
 // network `net`, with the controlling constriction D_cP at
-// P = control_percent.
+// P = control_percent of the CSD counted by `control_weight`.
 std::vector<double> constriction_vector(const ConstrictionNetwork& net,
                                         double control_percent,
+                                        CsdWeight control_weight,
                                         const VerdictGrains& grains,
                                         const GradingCriteria& criteria);
 

@@ -218,6 +218,25 @@ def doc_examples(args, chk):
         with open(os.path.join(root, "csd_all.txt")) as f:
             rows = [l for l in f if not l.startswith("#")]
         chk.check("csd_all.txt has entry 1 = %d rows" % len(rows), len(rows) == n)
+        # control_by area: D_c35 weighted by the discs' area, as computed
+        # from the diameters of csd_all.txt
+        d = sorted(float(l.split()[0]) for l in rows)
+        tot, cum, want = sum(x * x for x in d), 0.0, None
+        for x in d:
+            cum += x * x
+            if want is None and 100.0 * cum / tot >= 35.0:
+                want = x
+        line = [l for l in blocks[0].splitlines() if "constriction/size" in l][0]
+        text = (blocks[0].replace(line, line + " control_by area")
+                + thermo_vector("csd") + "run 0\n")
+        res = su.run_launcher(args, su.write_file(os.path.join(root, "in.ex1_area"), text),
+                              cwd=root, timeout=300)
+        va = last_thermo(res.text, "csd") if res.returncode == 0 else None
+        got = va[AT["control"]] if va else None
+        chk.check("control_by area: entry 41 %s is D_c35 by area from csd_all.txt's diameters "
+                  "(%s), above D_c35 by number %.4g" % (got, want, v["dc35_number"]),
+                  got is not None and want is not None and abs(got - want) <= 1e-6 * want
+                  and got >= v["dc35_number"], res.describe())
         for r in (2, 4):
             if vec.get(r):
                 chk.check("example 1: %d ranks print the vector of 1 rank" % r,

@@ -264,3 +264,17 @@ TEST(ConstrictionNetwork, PercentilesByNumberAndByDiameterCubed) {
   EXPECT_NEAR(cum[2].percent_cubic, 100.0 * 24.0 / 88.0, 1e-12);
   EXPECT_TRUE(std::isnan(fabric::csd_percentiles({}, {50.0}, false)[0]));
 }
+
+TEST(ConstrictionNetwork, PercentilesByArea) {
+  // D 2, 2, 2, 4: areas 4, 4, 4, 16 (the three small hold 42.9 %), so D_c35
+  // by area is 2 and D_c50 by area 4; by number both are 2.
+  std::vector<fabric::ConstrictionDisc> d(4);
+  for (int i = 0; i < 4; ++i) d[i].radius = i < 3 ? 1.0 : 2.0;
+  auto a = fabric::csd_percentiles(d, {35.0, 50.0}, fabric::CsdWeight::area);
+  EXPECT_DOUBLE_EQ(a[0], 2.0);
+  EXPECT_DOUBLE_EQ(a[1], 4.0);
+  auto cum = fabric::cumulative_csd(d);
+  EXPECT_NEAR(cum[2].percent_area, 100.0 * 12.0 / 28.0, 1e-12);
+  auto n = fabric::csd_percentiles(d, {50.0}, fabric::CsdWeight::number);
+  EXPECT_DOUBLE_EQ(n[0], 2.0);
+}

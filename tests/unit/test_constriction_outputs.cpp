@@ -43,7 +43,7 @@ TEST(ConstrictionOutputs, EveryEntryIsWhereTheTableSaysByName) {
   g.loose_mass = {1.0, 3.0};
   g.pore_forming_mass = 4.0;
   const std::vector<double> v =
-      fabric::constriction_vector(net, 35.0, g, numbered_criteria());
+      fabric::constriction_vector(net, 35.0, fabric::CsdWeight::number, g, numbered_criteria());
   ASSERT_EQ(static_cast<int>(v.size()), fabric::kConstrictionVectorEntries);
   EXPECT_EQ(v[at(ConstrictionEntry::constrictions)], 10.0);
   for (int k = 0; k < fabric::kCsdPercentiles; ++k) {
@@ -69,7 +69,7 @@ TEST(ConstrictionOutputs, EveryEntryIsWhereTheTableSaysByName) {
 TEST(ConstrictionOutputs, ControlPicksItsPercentile) {
   fabric::VerdictGrains none;
   const auto net = numbered_network();
-  const auto v = fabric::constriction_vector(net, 60.0, none, {});
+  const auto v = fabric::constriction_vector(net, 60.0, fabric::CsdWeight::number, none, {});
   EXPECT_EQ(v[at(ConstrictionEntry::control)],
             v[at(ConstrictionEntry::dc60_number)]);
   // No loose grains, no psd: the verdict and the criteria are 0.
