@@ -250,6 +250,18 @@ SERIES_COLUMNS = (
 )
 
 
+# hold_series.txt (in.oedometer -var hold N): one row every relax_every
+# steps of the hold, the first the stress at rest.
+HOLD_SERIES_COLUMNS = (
+    ("step", "step"),
+    ("t_hold(s)", "t_hold"),
+    ("sigma_lid(Pa)", "lid_stress"),
+    ("KE_translation(J)", "ke_translation"),
+    ("primary%mass", "primary_mass_pct"),
+    ("unbalanced_force_ratio", "unbalanced_force_ratio"),
+)
+
+
 def series_header(path):
     """The column words of a series file's '# step ...' line, or None."""
     with open(path) as f:
@@ -262,21 +274,22 @@ def series_header(path):
     return None
 
 
-def read_series(path):
-    """fabric_series.txt as {name: numpy array}, names of SERIES_COLUMNS
-    (the first row is before loading: the packer's geometric contacts).
-    ValueError if the file's column line is not SERIES_COLUMNS' or it holds
-    no row."""
+def read_series(path, columns=SERIES_COLUMNS):
+    """fabric_series.txt (or, with columns=HOLD_SERIES_COLUMNS,
+    hold_series.txt) as {name: numpy array}, names of the table (the first
+    row of fabric_series.txt is before loading: the packer's geometric
+    contacts). ValueError if the file's column line is not the table's or
+    it holds no row."""
     words = series_header(path)
-    want = [w for w, _ in SERIES_COLUMNS]
+    want = [w for w, _ in columns]
     if words != want:
-        raise ValueError("%s: columns %s, expected %s (tools/outputs.py SERIES_COLUMNS)"
+        raise ValueError("%s: columns %s, expected %s (tools/outputs.py)"
                          % (path, words, want))
     rows = [[float(x) for x in r] for r in data_rows(path)]
     if not rows or min(len(r) for r in rows) != len(want):
         raise ValueError("%s: no rows of %d numbers" % (path, len(want)))
     a = np.array(rows)
-    return {name: a[:, i] for i, (_, name) in enumerate(SERIES_COLUMNS)}
+    return {name: a[:, i] for i, (_, name) in enumerate(columns)}
 
 
 # ---- fix servo/rest ---------------------------------------------------------

@@ -204,10 +204,10 @@ def read_series(work, name):
     path = os.path.join(work, name, "hold_series.txt")
     if not os.path.exists(path):
         return []
-    rows = [l.split() for l in open(path) if l.strip() and not l.startswith("#")]
-    step0 = float(rows[0][0])
-    return [(int(float(r[0]) - step0), float(r[1]), float(r[2]), float(r[5]))
-            for r in rows]
+    s = outputs.read_series(path, outputs.HOLD_SERIES_COLUMNS)
+    step0 = s["step"][0]
+    return [(int(st - step0), t, sig, ratio) for st, t, sig, ratio in
+            zip(s["step"], s["t_hold"], s["lid_stress"], s["unbalanced_force_ratio"])]
 
 
 # the two panels of the figure: what the numerics change, and what sliding does

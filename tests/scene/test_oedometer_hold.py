@@ -60,13 +60,14 @@ def main():
               % (hold.group(1), change),
               int(hold.group(1)) == HOLD and abs(change) < 2.0
               and abs(100 * (after / before - 1) - change) < 1e-6, hold.group(0))
-    rows = su.outputs.data_rows(os.path.join(out, "hold_series.txt"))
-    chk.check("hold_series.txt: %d rows, one every 500 steps and the start (got %d); "
-              "the first is the stress before, the last the stress after"
-              % (HOLD // EVERY + 1, len(rows)),
-              len(rows) == HOLD // EVERY + 1
-              and abs(float(rows[0][2]) / before - 1) < 1e-5
-              and abs(float(rows[-1][2]) / after - 1) < 1e-5, rows[:1] + rows[-1:])
+    lid = list(su.outputs.read_series(os.path.join(out, "hold_series.txt"),
+                                      su.outputs.HOLD_SERIES_COLUMNS)["lid_stress"])
+    chk.check("hold_series.txt (read by name): %d rows, one every 500 steps and the start "
+              "(got %d); the first is the stress before, the last the stress after"
+              % (HOLD // EVERY + 1, len(lid)),
+              len(lid) == HOLD // EVERY + 1
+              and abs(lid[0] / before - 1) < 1e-5
+              and abs(lid[-1] / after - 1) < 1e-5, lid[:1] + lid[-1:])
     return chk.finish()
 
 
