@@ -191,6 +191,11 @@ void FixServoRest::end_of_step() {
   if (protocol_->ended()) return;
   const long step = static_cast<long>(update->ntimestep);
   const double stress = lid_stress(), target = target_stress();
+  if (!(target > 0.0) || !std::isfinite(target))
+    error->all(FLERR, ("Fix servo/rest: the target stress v_" + stress_var_ + " is " +
+                       std::to_string(target) + " Pa at step " + std::to_string(step) +
+                       ": it must stay positive")
+                          .c_str());
   protocol_->add_step(step, stress, target);
   if (step != protocol_->next_decision(step - 1)) return;
   fabric::RestMeasures m;

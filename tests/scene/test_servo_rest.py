@@ -26,7 +26,8 @@ rest on the target. Bad input stops with an ERROR
 naming the value: no servo fix, a servo fix of another style, a
 fix quasi/static without balance, a negative rest_tol, the energy rule
 without ke_vrms, a check that does not divide every, an unknown keyword,
-a lid neither held nor servo, no stress. With `lid servo` the page's scene
+a lid neither held nor servo, a target stress variable that falls to 0, no
+stress. With `lid servo` the page's scene
 relaxes under the servo and ends at rest on the target.
 """
 import os
@@ -150,6 +151,9 @@ def check_errors(args, chk, scene, fix_line):
          ["check 300: must be 1 step or more and divide every 500"]),
         ("an unknown keyword", fix_line + " rest 1e-3", ["rest"]),
         ("a lid neither held nor servo", fix_line + " lid free", ["lid 'free' is unknown: use servo or held"]),
+        ("a target stress that falls to 0", "variable S0 equal 2.5e6*(step<1000)\n"
+         + fix_line.replace("stress 2.5e6", "stress v_S0"),
+         ["target stress v_S0 is 0.000000 Pa at step 1000", "must stay positive"]),
         ("no stress", fix_line.replace("stress 2.5e6 ", ""),
          ["needs the keywords stress"]),
     )
