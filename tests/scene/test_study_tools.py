@@ -37,19 +37,73 @@ import scene_util as su
 import soils  # noqa: E402  (tools/, on the path through scene_util)
 
 SIDE = "2.5"
+# fabric_layers.py's layers, from the floor to the top
+LAYER_NAMES = ["floor, first half d_N", "floor, second half d_N", "interior",
+               "top, second half d_N", "top, first half d_N"]
+CORE = "core, 1 d_N from every wall"
 
 
-def main():
-    args = su.parse_args(__doc__)
-    su.fresh_dir(args.work)
-    chk = su.Checker()
+def tool(args, name, argv, timeout):
+    """Runs tools/NAME with `argv` from the repository root."""
+    return subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", name)] + argv,
+                          cwd=args.source, capture_output=True, text=True, timeout=timeout)
+
+
+def tail(p, n=1500):
+    return p.stdout[-n:] + p.stderr[-n:]
+
+
+def read_text(path, ok=True):
+    """The text of `path` if `ok`, else ''."""
+    if not ok:
+        return ""
+    with open(path) as f:
+        return f.read()
+
+
+def read_csv(path, ok=True):
+    """The rows of a CSV file as dicts by its header ([] if not `ok` or no file)."""
+    if not ok or not os.path.isfile(path):
+        return []
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def write_csv(path, fields, rows):
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(rows)
+
+
+def csv_fields(path):
+    with open(path) as f:
+        return next(csv.reader(f))
+
+
+def link_runs(study, rows, target=lambda r: r["name"]):
+    """study/runs/NAME -> WORK/runs/target(row) for each row."""
+    runs = os.path.join(study, "runs")
+    os.makedirs(runs, exist_ok=True)
+    for r in rows:
+        link = os.path.join(runs, r["name"])
+        if not os.path.lexists(link):
+            os.symlink(os.path.join(os.path.dirname(study), "runs", target(r)), link)
+
+
+def model(row):
+    """'DA Cu 2.5': a CSV row's model as the report's tables name it."""
+    return "%s Cu %s" % (soils.TAG[row["rule"]], row["soil"][2:])
+
+
+def check_driver(args, chk):
+    """1. One CSV row per run with its folder; run again, nothing to run."""
     driver = os.path.join(args.source, "tools", "oedometer_study.py")
     cmd = ["/usr/bin/python3", driver, "--small", "--sides", SIDE, "--var", "t_max=0.002",
            "--jobs", "2", "--out", args.work]
     p = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=600)
     print(p.stdout[-3000:], p.stderr[-3000:])
-    csv_path = os.path.join(args.work, "study.csv")
-    rows = list(csv.DictReader(open(csv_path))) if os.path.exists(csv_path) else []
+    rows = read_csv(os.path.join(args.work, "study.csv"))
     chk.check("the driver exits 0 with 4 CSV rows (both rules x Cu 2.0, 2.5), each with "
               "its run folder: exit %d, %d rows" % (p.returncode, len(rows)),
               p.returncode == 0 and len(rows) == 4
@@ -57,14 +111,19 @@ def main():
                       for r in rows))
     p2 = subprocess.run(cmd, cwd=args.source, capture_output=True, text=True, timeout=300)
     chk.check("run again, the driver resumes and runs nothing: %s"
-              % p2.stdout.splitlines()[0] if p2.stdout else "(no output)",
-                  p2.returncode == 0 and re.search(r"4 done, 0 to run", p2.stdout) is not None)
+              % (p2.stdout.splitlines()[0] if p2.stdout else "(no output)"),
+              p2.returncode == 0 and re.search(r"4 done, 0 to run", p2.stdout) is not None)
+    return rows
+
+
+def check_report(args, chk, rows):
+    """2. validation_report's tables and figures, --matrix and --label;
+    the tables (for the split-study check)."""
     report = os.path.join(args.work, "report")
-    p3 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
-                         "--study", args.work, "--side", SIDE, "--out", report,
-                         "--matrix", os.path.join(args.work, "study.csv")],
-                        cwd=args.source, capture_output=True, text=True, timeout=600)
-    tables = open(os.path.join(report, "tables.md")).read() if p3.returncode == 0 else ""
+    study_csv = os.path.join(args.work, "study.csv")
+    p3 = tool(args, "validation_report.py", ["--study", args.work, "--side", SIDE,
+                                             "--out", report, "--matrix", study_csv], 600)
+    tables = read_text(os.path.join(report, "tables.md"), p3.returncode == 0)
     pngs = ["summary.png", "DA/fig11_loose_number.png", "LA/fig19_primary_of_interval.png",
             "DA/fig17_18_distributions.png", "LA/fig15_16_direction_rose.png"]
     chk.check("validation_report: a table row per model, Table 2 with the paper's values, figures",
@@ -76,10 +135,8 @@ def main():
     # --matrix: one row per model from the CSV, each seed's primary % as the
     # CSV has it, and its own summary figure.
     matrix = tables.split("The eight models at side %s d_N" % SIDE, 1)[1] if tables else ""
-    rest = {"%s Cu %s" % (soils.TAG[r["rule"]], r["soil"][2:]): int(r["at_rest"] == "yes")
-            for r in rows}
-    want = {"%s Cu %s" % (soils.TAG[r["rule"]], r["soil"][2:]):
-            "%.1f" % float(r["primary_mass_pct"]) for r in rows}
+    rest = {model(r): int(r["at_rest"] == "yes") for r in rows}
+    want = {model(r): "%.1f" % float(r["primary_mass_pct"]) for r in rows}
     chk.check("validation_report --matrix: a row per model with its seed's primary %% %s" % want,
               all(re.search(r"\| %s \| [0-9.() -]+ \| 1 \(%d\) \| %s \| %s \|"
                             % (re.escape(m), rest[m], re.escape(v), re.escape(v)), matrix)
@@ -88,91 +145,81 @@ def main():
               matrix[:2000])
     # --label: a second matrix beside the first, in files and a page block of
     # its own; the unlabelled block stays as it was.
-    page = os.path.join(args.work, "page.md")
-    open(page, "w").write("<!-- matrix -->\nkept\n<!-- /matrix -->\n"
-                          "<!-- matrix-k1 -->\nold\n<!-- /matrix-k1 -->\n")
-    p5 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
-                         "--out", report, "--matrix", os.path.join(args.work, "study.csv"),
-                         "--label", "k1", "--page", page],
-                        cwd=args.source, capture_output=True, text=True, timeout=300)
-    body = open(page).read()
+    page = su.write_file(os.path.join(args.work, "page.md"),
+                         "<!-- matrix -->\nkept\n<!-- /matrix -->\n"
+                         "<!-- matrix-k1 -->\nold\n<!-- /matrix-k1 -->\n")
+    p5 = tool(args, "validation_report.py", ["--out", report, "--matrix", study_csv,
+                                             "--label", "k1", "--page", page], 300)
+    body = read_text(page)
     chk.check("validation_report --matrix --label k1: tables_sideS_k1.md, summary_sideS_k1.png, "
               "the page's matrix-k1 block filled, the matrix block kept",
               p5.returncode == 0 and "kept" in body and "old" not in body
               and all("| %s |" % m in body for m in want)
               and os.path.exists(os.path.join(report, "tables_side%s_k1.md" % SIDE))
               and os.path.exists(os.path.join(report, "summary_side%s_k1.png" % SIDE)),
-              p5.stdout[-1500:] + p5.stderr[-1500:] + body[:1500])
-    # Several --study folders: the runs split by rule over two folders (as
-    # two calls of the driver leave them) give the tables of the one folder;
-    # with --label and --page the tables go to the labelled blocks; a run
-    # given twice is refused.
+              tail(p5) + body[:1500])
+    return tables
+
+
+def check_split_studies(args, chk, rows, tables):
+    """2. Several --study folders: the runs split by rule over two folders
+    (as two calls of the driver leave them) give the tables of the one
+    folder; with --label and --page the tables go to the labelled blocks; a
+    run given twice is refused."""
+    fields = csv_fields(os.path.join(args.work, "study.csv"))
     halves = []
     for rule in ("discrete", "layerwise"):
         d = os.path.join(args.work, "split_" + rule)
-        os.makedirs(os.path.join(d, "runs"), exist_ok=True)
         mine = [r for r in rows if r["rule"] == rule]
-        with open(os.path.join(args.work, "study.csv")) as f:
-            fields = next(csv.reader(f))
-        with open(os.path.join(d, "study.csv"), "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=fields)
-            w.writeheader()
-            w.writerows(mine)
-        for r in mine:
-            link = os.path.join(d, "runs", r["name"])
-            if not os.path.lexists(link):
-                os.symlink(os.path.join(args.work, "runs", r["name"]), link)
+        link_runs(d, mine)
+        write_csv(os.path.join(d, "study.csv"), fields, mine)
         halves.append(d)
-    page2 = os.path.join(args.work, "page2.md")
-    open(page2, "w").write("<!-- tables -->\nkept\n<!-- /tables -->\n"
-                           "<!-- tables-k2 -->\nold\n<!-- /tables-k2 -->\n")
+    page2 = su.write_file(os.path.join(args.work, "page2.md"),
+                          "<!-- tables -->\nkept\n<!-- /tables -->\n"
+                          "<!-- tables-k2 -->\nold\n<!-- /tables-k2 -->\n")
     report2 = os.path.join(args.work, "report2")
-    p6 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
-                         "--study"] + halves + ["--side", SIDE, "--out", report2,
-                                                "--label", "k2", "--page", page2],
-                        cwd=args.source, capture_output=True, text=True, timeout=600)
-    tables2 = open(os.path.join(report2, "tables.md")).read() if p6.returncode == 0 else ""
-    body2 = open(page2).read()
+    p6 = tool(args, "validation_report.py", ["--study"] + halves + [
+        "--side", SIDE, "--out", report2, "--label", "k2", "--page", page2], 600)
+    tables2 = read_text(os.path.join(report2, "tables.md"), p6.returncode == 0)
+    body2 = read_text(page2)
     chk.check("validation_report --study A B: the tables of the one folder, "
               "the page's tables-k2 block filled, the tables block kept",
               p6.returncode == 0 and tables2.split("\n\nThe eight models")[0].strip()
               == tables.split("\n\nThe eight models")[0].strip()
               and "kept" in body2 and "old" not in body2
-              and all("| %s |" % m in body2 for m in want)
+              and all("| %s |" % model(r) in body2 for r in rows)
               and os.path.exists(os.path.join(report2, "DA", "fig12_primary_mass.png")),
-              p6.stdout[-1500:] + p6.stderr[-1500:] + body2[:1500])
-    p7 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
-                         "--study", args.work, halves[0], "--side", SIDE,
-                         "--out", os.path.join(args.work, "report3")],
-                        cwd=args.source, capture_output=True, text=True, timeout=300)
+              tail(p6) + body2[:1500])
+    p7 = tool(args, "validation_report.py", ["--study", args.work, halves[0], "--side", SIDE,
+                                             "--out", os.path.join(args.work, "report3")], 300)
     chk.check("validation_report --study with a run in two folders: exit 2 naming it (%s)"
               % p7.stderr.strip()[:200],
               p7.returncode == 2 and "in both" in p7.stderr)
-    # Rank counts: a seed run on 2 ranks only is that seed in the tables; a
-    # seed run on 1 and on 2 ranks is counted once (its 1-rank run) and its
-    # 2-rank run goes to the rank-count table. The 2-rank rows are made from
-    # the DA rows (their folders linked), with primary % of their own.
+
+
+def check_rank_counts(args, chk, rows):
+    """2. Rank counts: a seed run on 2 ranks only is that seed in the
+    tables; a seed run on 1 and on 2 ranks is counted once (its 1-rank run)
+    and its 2-rank run goes to the rank-count table. The 2-rank rows are
+    made from the DA rows (their folders linked), with primary % of their
+    own."""
     mixed = os.path.join(args.work, "mixed")
-    os.makedirs(os.path.join(mixed, "runs"), exist_ok=True)
     da = {r["soil"]: r for r in rows if r["rule"] == "discrete"}
+
+    def plus10(r):
+        return "%.2f" % (float(r["primary_mass_pct"]) + 10)
     new_seed = dict(da["cu2.0"], name=da["cu2.0"]["name"].replace("seed1", "seed2") + "_ranks2",
-                    seed="2", ranks="2", primary_mass_pct="%.2f" % (float(da["cu2.0"]["primary_mass_pct"]) + 10))
+                    seed="2", ranks="2", primary_mass_pct=plus10(da["cu2.0"]))
     same_seed = dict(da["cu2.5"], name=da["cu2.5"]["name"] + "_ranks2", ranks="2",
-                     primary_mass_pct="%.2f" % (float(da["cu2.5"]["primary_mass_pct"]) + 10))
-    with open(os.path.join(mixed, "study.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields)
-        w.writeheader()
-        w.writerows(rows + [new_seed, same_seed])
-    for r, target in [(r, r["name"]) for r in rows] + [(new_seed, da["cu2.0"]["name"]),
-                                                        (same_seed, da["cu2.5"]["name"])]:
-        link = os.path.join(mixed, "runs", r["name"])
-        if not os.path.lexists(link):
-            os.symlink(os.path.join(args.work, "runs", target), link)
-    p8 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "validation_report.py"),
-                         "--study", mixed, "--side", SIDE, "--out", os.path.join(args.work, "report4")],
-                        cwd=args.source, capture_output=True, text=True, timeout=300)
-    tables4 = (open(os.path.join(args.work, "report4", "tables.md")).read()
-               if p8.returncode == 0 else "")
+                     primary_mass_pct=plus10(da["cu2.5"]))
+    link_runs(mixed, rows)
+    link_runs(mixed, [new_seed], lambda r: da["cu2.0"]["name"])
+    link_runs(mixed, [same_seed], lambda r: da["cu2.5"]["name"])
+    write_csv(os.path.join(mixed, "study.csv"), csv_fields(os.path.join(args.work, "study.csv")),
+              rows + [new_seed, same_seed])
+    p8 = tool(args, "validation_report.py", ["--study", mixed, "--side", SIDE,
+                                             "--out", os.path.join(args.work, "report4")], 300)
+    tables4 = read_text(os.path.join(args.work, "report4", "tables.md"), p8.returncode == 0)
     first = tables4.split("\n\nTable 2")[0]
     ranks_table = tables4.split("Rank count", 1)[1].split("\n\n", 2)[1] if "Rank count" in tables4 else ""
     mean20 = 0.5 * (float(da["cu2.0"]["primary_mass_pct"]) + float(new_seed["primary_mass_pct"]))
@@ -187,105 +234,128 @@ def main():
               and same_seed["primary_mass_pct"] in ranks_table
               and new_seed["primary_mass_pct"] not in ranks_table,
               p8.stderr[-1500:] + tables4[:3000])
-    # tools/fabric_layers.py on every run: the layers from the floor to
-    # the top hold every grain once and all of the mass, and the whole
-    # specimen's primary share is the CSV row's.
-    for row in rows:
-        rundir = os.path.join(args.work, "runs", row["name"])
-        p4 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
-                             rundir], cwd=args.source, capture_output=True, text=True, timeout=120)
-        got = {}
-        for line in p4.stdout.splitlines():
-            w = line.rsplit(None, 5)
-            if len(w) == 6 and not line.startswith(("#", "layer ")):
-                got[w[0].strip()] = [float(x) for x in w[2:]]
-        layer_names = ["floor, first half d_N", "floor, second half d_N", "interior",
-                       "top, second half d_N", "top, first half d_N"]
-        ok = p4.returncode == 0 and all(n in got for n in layer_names + ["whole specimen"])
-        grains = sum(got[n][0] for n in layer_names) if ok else -1
-        mass = sum(got[n][1] for n in layer_names) if ok else -1
-        whole = got["whole specimen"][2] if ok else float("nan")
-        chk.check("%s: fabric_layers: %d grains in the layers (CSV %s), mass %.1f %%, "
-                  "whole primary %.2f %% (CSV %s)"
-                  % (row["name"], grains, row["grains"], mass, whole, row["primary_mass_pct"]),
-                  ok and grains == int(row["grains"]) and abs(mass - 100) < 0.1
-                  and abs(whole - float(row["primary_mass_pct"])) < 0.015,
-                  p4.stdout[-1500:] + p4.stderr[-1500:])
-        core = got.get("core, 1 d_N from every wall", [-1])[0]
-        chk.check("%s: fabric_layers: the core (%d grains) lies inside the interior (%d)"
-                  % (row["name"], core, got["interior"][0] if ok else -1),
-                  ok and 0 < core < got["interior"][0],
-                  p4.stdout[-1500:])
-        # --slices: equal slices hold every grain once, all of the mass and
-        # all of the fines; their primary shares, weighted by mass, give the
-        # whole specimen's
-        csvp = os.path.join(args.work, row["name"] + "_slices.csv")
-        p5 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
-                             "--slices", "5", "--csv", csvp, rundir],
-                            cwd=args.source, capture_output=True, text=True, timeout=120)
-        sl = list(csv.DictReader(open(csvp))) if p5.returncode == 0 and os.path.isfile(csvp) else []
-        f = lambda k: [float(r[k]) for r in sl]
-        ok = len(sl) == 5
-        grains = sum(int(r["grains"]) for r in sl)
-        mass = sum(f("mass_pct")) if ok else -1
-        fines = sum(f("fines_share_pct")) if ok else -1
-        whole = sum(a * b for a, b in zip(f("mass_pct"), f("primary_pct"))) / 100 if ok else -1
-        chk.check("%s: fabric_layers --slices 5: %d grains (CSV %s), mass %.2f %%, fines %.2f %%, "
-                  "mass-weighted primary %.2f %% (CSV %s)"
-                  % (row["name"], grains, row["grains"], mass, fines, whole, row["primary_mass_pct"]),
-                  ok and grains == int(row["grains"]) and abs(mass - 100) < 0.01
-                  and abs(fines - 100) < 0.01 and abs(whole - float(row["primary_mass_pct"])) < 0.015,
-                  p5.stdout[-1500:] + p5.stderr[-1500:])
-        # one slice: its anisotropies from final_contacts.txt are the
-        # compute's whole-specimen a_c and a_n (entries 27-28) within 1 % (or
-        # 0.01); they differ only by the threshold's mean, which in the
-        # compute holds the wall contacts too
-        csv1 = os.path.join(args.work, row["name"] + "_slice.csv")
-        p7 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "fabric_layers.py"),
-                             "--slices", "1", "--csv", csv1, rundir],
-                            cwd=args.source, capture_output=True, text=True, timeout=120)
-        one = list(csv.DictReader(open(csv1))) if p7.returncode == 0 and os.path.isfile(csv1) else []
-        a = [float(one[0][k]) if len(one) == 1 and one[0][k] else float("nan")
-             for k in ("fabric_anisotropy", "force_anisotropy")]
-        b = [float(row[k]) for k in ("fabric_anisotropy", "force_anisotropy")]
-        chk.check("%s: fabric_layers --slices 1: a_c %.4f, a_n %.4f (compute: %.4f, %.4f)"
-                  % (row["name"], a[0], a[1], b[0], b[1]),
-                  all(abs(x - y) < max(0.01, 0.01 * abs(y)) for x, y in zip(a, b)),
-                  p7.stdout[-1500:] + p7.stderr[-1500:])
-    # tools/kinetic_energy.py on every run's final state: the scene's own
-    # kinetic energy at its last check and the CSV's primary share
-    for row in rows:
-        rundir = os.path.join(args.work, "runs", row["name"])
-        series = su.outputs.read_series(os.path.join(rundir, "fabric_series.txt"))
-        p6 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "kinetic_energy.py"),
-                             os.path.join(rundir, "final.dump"), "--slices", "4"],
-                            cwd=args.source, capture_output=True, text=True, timeout=120)
-        tot = re.search(r"kinetic energy (\S+) J", p6.stdout)
-        parts = re.search(r"^(\S+) J \(\d+ %\) in the mean velocity of 4 height slices, (\S+) J",
-                          p6.stdout, re.M)
-        prim = re.search(r"^primary: \d+ grains, (\S+) % of the mass", p6.stdout, re.M)
-        ke = float(tot.group(1)) if tot else float("nan")
-        want = float(series["ke_translation"][-1])
-        split_sum = float(parts.group(1)) + float(parts.group(2)) if parts else float("nan")
-        chk.check("%s: kinetic_energy: %.4g J (the last check's %.4g J), slices' mean + about "
-                  "%.4g J, primary %s %% of the mass (CSV %s)"
-                  % (row["name"], ke, want, split_sum, prim.group(1) if prim else None,
-                     row["primary_mass_pct"]),
-                  p6.returncode == 0 and abs(ke - want) <= 1e-3 * want
-                  and abs(split_sum - ke) <= 1e-3 * ke and prim is not None
-                  and abs(float(prim.group(1)) - float(row["primary_mass_pct"])) < 0.06,
-                  p6.stdout[-1500:] + p6.stderr[-1500:])
-    # tools/constriction_verdict.py on the runs, the launcher given relative
-    # to the caller's folder (each run's compute works in a folder of its
-    # own, so the tool must resolve it first): a verdict row per run with the
-    # run's primary share.
+
+
+def number(word):
+    """A number of a printed table; nan for '-' (an empty layer)."""
+    return float("nan") if word == "-" else float(word)
+
+
+def layer_table(stdout):
+    """fabric_layers.py's layer table, {layer label: {column: value}}, by
+    the column names of its 'layer ...' header line (the label, which holds
+    spaces, is what is left of a row after the other columns)."""
+    header = next((l.split() for l in stdout.splitlines() if l.startswith("layer ")), None)
+    if header is None:
+        return {}
+    names = header[1:]
+    got = {}
+    for line in stdout.splitlines():
+        w = line.rsplit(None, len(names))
+        if len(w) == 1 + len(names) and not line.startswith(("#", "layer ")):
+            got[w[0].strip()] = {n: (w[1 + k] if n == "height/d_N" else number(w[1 + k]))
+                                 for k, n in enumerate(names)}
+    return got
+
+
+def check_layers(args, chk, row):
+    """3. fabric_layers.py's layers: the layers from the floor to the top
+    hold every grain once and all of the mass, the whole specimen's primary
+    share is the CSV row's, the core lies inside the interior."""
+    rundir = os.path.join(args.work, "runs", row["name"])
+    p4 = tool(args, "fabric_layers.py", [rundir], 120)
+    got = layer_table(p4.stdout)
+    ok = p4.returncode == 0 and all(n in got for n in LAYER_NAMES + ["whole specimen"])
+    grains = sum(got[n]["grains"] for n in LAYER_NAMES) if ok else -1
+    mass = sum(got[n]["mass%"] for n in LAYER_NAMES) if ok else -1
+    whole = got["whole specimen"]["primary%"] if ok else float("nan")
+    chk.check("%s: fabric_layers: %d grains in the layers (CSV %s), mass %.1f %%, "
+              "whole primary %.2f %% (CSV %s)"
+              % (row["name"], grains, row["grains"], mass, whole, row["primary_mass_pct"]),
+              ok and grains == int(row["grains"]) and abs(mass - 100) < 0.1
+              and abs(whole - float(row["primary_mass_pct"])) < 0.015,
+              tail(p4))
+    core = got[CORE]["grains"] if CORE in got else -1
+    interior = got["interior"]["grains"] if ok else -1
+    chk.check("%s: fabric_layers: the core (%d grains) lies inside the interior (%d)"
+              % (row["name"], core, interior),
+              ok and 0 < core < interior, p4.stdout[-1500:])
+
+
+def slices_csv(args, row, n):
+    """fabric_layers.py --slices N --csv on the run: (process, CSV rows)."""
+    path = os.path.join(args.work, row["name"] + ("_slice.csv" if n == 1 else "_slices.csv"))
+    p = tool(args, "fabric_layers.py", ["--slices", str(n), "--csv", path,
+                                        os.path.join(args.work, "runs", row["name"])], 120)
+    return p, read_csv(path, p.returncode == 0)
+
+
+def check_slices(args, chk, row):
+    """3. --slices 5: equal slices hold every grain once, all of the mass
+    and all of the fines; their primary shares, weighted by mass, give the
+    whole specimen's. --slices 1: its anisotropies from final_contacts.txt
+    are the compute's whole-specimen a_c and a_n within 1 % (or 0.01); they
+    differ only by the threshold's mean, which in the compute holds the
+    wall contacts too."""
+    p5, sl = slices_csv(args, row, 5)
+
+    def f(k):
+        return [float(r[k]) for r in sl]
+    ok = len(sl) == 5
+    grains = sum(int(r["grains"]) for r in sl)
+    mass = sum(f("mass_pct")) if ok else -1
+    fines = sum(f("fines_share_pct")) if ok else -1
+    whole = sum(a * b for a, b in zip(f("mass_pct"), f("primary_pct"))) / 100 if ok else -1
+    chk.check("%s: fabric_layers --slices 5: %d grains (CSV %s), mass %.2f %%, fines %.2f %%, "
+              "mass-weighted primary %.2f %% (CSV %s)"
+              % (row["name"], grains, row["grains"], mass, fines, whole, row["primary_mass_pct"]),
+              ok and grains == int(row["grains"]) and abs(mass - 100) < 0.01
+              and abs(fines - 100) < 0.01 and abs(whole - float(row["primary_mass_pct"])) < 0.015,
+              tail(p5))
+    p7, one = slices_csv(args, row, 1)
+    keys = ("fabric_anisotropy", "force_anisotropy")
+    a = [float(one[0][k]) if len(one) == 1 and one[0][k] else float("nan") for k in keys]
+    b = [float(row[k]) for k in keys]
+    chk.check("%s: fabric_layers --slices 1: a_c %.4f, a_n %.4f (compute: %.4f, %.4f)"
+              % (row["name"], a[0], a[1], b[0], b[1]),
+              all(abs(x - y) < max(0.01, 0.01 * abs(y)) for x, y in zip(a, b)),
+              tail(p7))
+
+
+def check_kinetic_energy(args, chk, row):
+    """4. tools/kinetic_energy.py on the run's final state: the scene's own
+    kinetic energy at its last check and the CSV's primary share; its split
+    into the slices' mean velocity and the motion about it adds up."""
+    rundir = os.path.join(args.work, "runs", row["name"])
+    series = su.outputs.read_series(os.path.join(rundir, "fabric_series.txt"))
+    p6 = tool(args, "kinetic_energy.py", [os.path.join(rundir, "final.dump"), "--slices", "4"], 120)
+    tot = re.search(r"kinetic energy (\S+) J", p6.stdout)
+    parts = re.search(r"^(\S+) J \(\d+ %\) in the mean velocity of 4 height slices, (\S+) J",
+                      p6.stdout, re.M)
+    prim = re.search(r"^primary: \d+ grains, (\S+) % of the mass", p6.stdout, re.M)
+    ke = float(tot.group(1)) if tot else float("nan")
+    want = float(series["ke_translation"][-1])
+    split_sum = float(parts.group(1)) + float(parts.group(2)) if parts else float("nan")
+    chk.check("%s: kinetic_energy: %.4g J (the last check's %.4g J), slices' mean + about "
+              "%.4g J, primary %s %% of the mass (CSV %s)"
+              % (row["name"], ke, want, split_sum, prim.group(1) if prim else None,
+                 row["primary_mass_pct"]),
+              p6.returncode == 0 and abs(ke - want) <= 1e-3 * want
+              and abs(split_sum - ke) <= 1e-3 * ke and prim is not None
+              and abs(float(prim.group(1)) - float(row["primary_mass_pct"])) < 0.06,
+              tail(p6))
+
+
+def check_verdict(args, chk, rows):
+    """5. tools/constriction_verdict.py on the runs, the launcher given
+    relative to the caller's folder (each run's compute works in a folder
+    of its own, so the tool must resolve it first): a verdict row per run
+    with the run's primary share."""
     rel = os.path.relpath(args.launcher, args.source)
     dest = os.path.join(args.work, "verdict")
-    p8 = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "constriction_verdict.py"),
-                         "--study", args.work, "--launcher", rel, "--dest", dest],
-                        cwd=args.source, capture_output=True, text=True, timeout=600)
-    vpath = os.path.join(dest, "verdict.csv")
-    vrows = list(csv.DictReader(open(vpath))) if os.path.exists(vpath) else []
+    p8 = tool(args, "constriction_verdict.py", ["--study", args.work, "--launcher", rel,
+                                                "--dest", dest], 600)
+    vrows = read_csv(os.path.join(dest, "verdict.csv"))
     share = {r["name"]: float(r["primary_mass_pct"]) for r in rows}
     off = [(v["run"], v["primary_mass_percent"], share.get(v["run"])) for v in vrows
            if v["run"] not in share
@@ -295,7 +365,23 @@ def main():
               % (rel, p8.returncode, len(vrows), len(rows), off),
               p8.returncode == 0 and sorted(v["run"] for v in vrows) == sorted(r["name"] for r in rows)
               and not off,
-              p8.stdout[-1500:] + p8.stderr[-1500:])
+              tail(p8))
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    rows = check_driver(args, chk)
+    tables = check_report(args, chk, rows)
+    check_split_studies(args, chk, rows, tables)
+    check_rank_counts(args, chk, rows)
+    for row in rows:
+        check_layers(args, chk, row)
+        check_slices(args, chk, row)
+    for row in rows:
+        check_kinetic_energy(args, chk, row)
+    check_verdict(args, chk, rows)
     chk.finish()
 
 
