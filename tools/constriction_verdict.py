@@ -34,15 +34,6 @@ ENTRIES = outputs.constriction_vector(ROOT)
 NV = len(ENTRIES)
 
 
-def read_dump(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = max(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    cols = lines[i].split()[2:]
-    rows = np.array([[float(v) for v in l.split()] for l in lines[i + 1:] if l.strip()])
-    return {c: rows[:, k] for k, c in enumerate(cols)}
-
-
 def write_data(path, g):
     cls = g[outputs.PRIMARY]
     d = 2.0 * g["radius"]
@@ -116,8 +107,9 @@ def figure(path, name, psd, g, csd_p, csd_a, vp):
         x, y = cumulative(d[sel], g["mass"][sel], total)
         ax.step(x * 1e3, y, st, where="post", label=lab)
     for c, lab, st in ((csd_p, "CSD primary fabric", "g--"), (csd_a, "CSD whole specimen", "m:")):
-        if len(c):
-            ax.plot(c[:, 0] * 1e3, c[:, 1], st, label=lab + " (by number)")
+        if len(c["diameter"]):
+            ax.plot(c["diameter"] * 1e3, c["percent_finer_by_number"], st,
+                    label=lab + " (by number)")
     ax.axvline(vp["control"] * 1e3, color="g", lw=0.8)
     ax.axvline(vp["percolation"] * 1e3, color="g", lw=0.8, ls="-.")
     ax.set_xscale("log")
@@ -140,8 +132,8 @@ def title(name):
 
 
 def load_csd(path):
-    rows = [l.split() for l in open(path) if not l.startswith("#")]
-    return np.array([[float(v) for v in r] for r in rows]) if rows else np.zeros((0, 3))
+    """A csd file of the compute: {name of outputs.CSD_COLUMNS: array}."""
+    return outputs.read_csd(path)
 
 
 def main():
@@ -165,7 +157,7 @@ def main():
             continue
         soil = re.search(r"cu\d\.\d", name).group(0)
         psd = os.path.join(ROOT, "input_scripts", "psd", soil + ".txt")
-        g = read_dump(dump)
+        g = outputs.dump_last(dump)
         work = os.path.join(a.study, "constriction", name)
         os.makedirs(work, exist_ok=True)
         write_data(os.path.join(work, "grains.data"), g)
@@ -185,8 +177,8 @@ def main():
             f.write("# %s: cumulative CSDs of compute constriction/size\n"
                     "# set diameter_m percent_finer_by_number percent_finer_by_d3\n" % name)
             for lab, c in (("primary", csd_p), ("all", csd_a)):
-                for r in c:
-                    f.write("%s %.9g %.6f %.6f\n" % (lab, r[0], r[1], r[2]))
+                for r in zip(*(c[n] for n in outputs.CSD_COLUMNS)):
+                    f.write("%s %.9g %.6f %.6f\n" % ((lab,) + r))
         figure(os.path.join(a.dest, "fig_%s.png" % name), name, read_psd(psd), g, csd_p, csd_a, vp)
         prim = g[outputs.PRIMARY] == 1
         table.append({

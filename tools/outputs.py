@@ -17,8 +17,13 @@ for every tool and test:
 Each table is one X(position, name, "meaning") per line, positions from 1
 as c_ID[I] and f_ID[I] count them. Also here: the output files of
 input_scripts/in.oedometer that hold these outputs (fabric_global.txt,
-fabric_intervals.txt), read by position and named by the tables, and the
-lines of an input script that print the fix's vector.
+fabric_intervals.txt, rest.txt, the series), read by position and named by
+the tables; LAMMPS text dumps (read_dump: dump custom and dump local,
+columns by the names of their own column line), final_contacts.txt
+(CONTACT_COLUMNS), compute constriction/size's csd file and local array,
+the outlet's file of fix massflow/mesh, and the lines of an input script
+that print the fix's vector. No tool or test reads a column of these
+files by its position anywhere else.
 
 Standard library and numpy only; import it as `import outputs` with tools/
 on sys.path (the scene tests get it from --source).
@@ -197,20 +202,143 @@ def pack_vector_values(text, source=ROOT):
     return dict(zip(names, (float(v) for v in found[-1].split())))
 
 
+# ---- LAMMPS text dumps (dump custom, dump local) ----------------------------
+
+class Snapshot:
+    """One snapshot of a LAMMPS text dump: `timestep`, `natoms` (the atoms
+    of a dump custom, the entries of a dump local), `box` [(lo, hi)] * 3,
+    `columns` (the names of its ITEM: ATOMS or ITEM: ENTRIES line, e.g.
+    'id', 'radius', 'c_pf[2]') and `rows` (each row's tokens as printed).
+    Read a column by its name: snap["radius"] or snap.col("id", int)."""
+
+    def __init__(self, timestep, natoms, box, columns, rows):
+        self.timestep = timestep
+        self.natoms = natoms
+        self.box = box
+        self.columns = columns
+        self.rows = rows
+
+    def index(self, name):
+        """The 0-based position of column `name`; ValueError naming the
+        columns the dump has if it has no such column."""
+        if name not in self.columns:
+            raise ValueError("the dump has no column %s (it has %s)"
+                             % (name, " ".join(self.columns)))
+        return self.columns.index(name)
+
+    def col(self, name, dtype=float):
+        """Column `name` as a numpy array (dtype float, or a function of
+        the printed token such as int)."""
+        k = self.index(name)
+        if dtype is float:
+            return np.array([r[k] for r in self.rows], dtype=float)
+        return np.array([dtype(r[k]) for r in self.rows])
+
+    def __getitem__(self, name):
+        return self.col(name)
+
+    def __contains__(self, name):
+        return name in self.columns
+
+    def keys(self):
+        return list(self.columns)
+
+    def by_id(self):
+        """{id: row tokens}."""
+        k = self.index("id")
+        return {int(r[k]): r for r in self.rows}
+
+    def as_dict(self):
+        """{column name: numpy array of floats}."""
+        data = np.array(self.rows, dtype=float).reshape(len(self.rows), len(self.columns))
+        return {name: data[:, j] for j, name in enumerate(self.columns)}
+
+
+def read_dump(path):
+    """All snapshots of a LAMMPS text dump (dump custom: ITEM: ATOMS, or
+    dump local: ITEM: ENTRIES), in order, as Snapshot objects whose columns
+    are looked up by the names of the dump's own column line. An incomplete
+    last snapshot (a run still writing) is dropped; ValueError on anything
+    else that is not a dump snapshot."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    snaps, i = [], 0
+    while i < len(lines):
+        if not lines[i].startswith("ITEM: TIMESTEP"):
+            i += 1
+            continue
+        head = lines[i:i + 9]
+        if len(head) < 9:
+            break
+        if not (head[2].startswith("ITEM: NUMBER OF ")
+                and head[4].startswith("ITEM: BOX BOUNDS")
+                and (head[8].startswith("ITEM: ATOMS") or head[8].startswith("ITEM: ENTRIES"))):
+            raise ValueError("%s: line %d: not the header of a dump snapshot "
+                             "(TIMESTEP, NUMBER OF ATOMS/ENTRIES, BOX BOUNDS, "
+                             "ATOMS/ENTRIES)" % (path, i + 1))
+        n = int(head[3])
+        box = [tuple(float(v) for v in head[5 + a].split()[:2]) for a in range(3)]
+        columns = head[8].split()[2:]
+        rows = [l.split() for l in lines[i + 9:i + 9 + n]]
+        if len(rows) < n or any(len(r) != len(columns) for r in rows):
+            if i + 9 + n >= len(lines):
+                break       # the last snapshot, cut short
+            raise ValueError("%s: the snapshot of step %s has rows that do not "
+                             "hold its %d columns" % (path, head[1], len(columns)))
+        snaps.append(Snapshot(int(head[1]), n, box, columns, rows))
+        i += 9 + n
+    return snaps
+
+
+def last_snapshot(path):
+    """The last complete snapshot of a text dump (read_dump); ValueError
+    if it holds none."""
+    snaps = read_dump(path)
+    if not snaps:
+        raise ValueError("%s: no complete dump snapshot" % path)
+    return snaps[-1]
+
+
 def dump_last(path):
     """The last snapshot of a LAMMPS text dump (dump custom, e.g. the scene's
     final.dump) as {column name: numpy array}, by the names of its ITEM:
     ATOMS line."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    heads = [k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS")]
-    if not heads:
-        raise ValueError("%s: no ITEM: ATOMS snapshot" % path)
-    k = heads[-1]
-    names = lines[k].split()[2:]
-    rows = [l.split() for l in lines[k + 1:] if l.strip() and not l.startswith("ITEM")]
-    data = np.array(rows, dtype=float).reshape(len(rows), len(names))
-    return {name: data[:, j] for j, name in enumerate(names)}
+    return last_snapshot(path).as_dict()
+
+
+def vtk_component(array_name, column):
+    """The component of a VTK point array of dump custom/vtk that holds dump
+    column `column`: the dump writes the columns c_ID[1] .. c_ID[n] as one
+    array 'c_ID[1-n]' of n components, so vtk_component('c_pf[1-3]',
+    'c_pf[2]') is 1; a one-column array named `column` is component 0;
+    None if the array does not hold the column."""
+    if array_name == column:
+        return 0
+    m = re.match(r"^(\w+)\[(\d+)-(\d+)\]$", array_name)
+    c = re.match(r"^(\w+)\[(\d+)\]$", column)
+    if not m or not c or m.group(1) != c.group(1):
+        return None
+    lo, hi, k = int(m.group(2)), int(m.group(3)), int(c.group(2))
+    return k - lo if lo <= k <= hi else None
+
+
+# final_contacts.txt of in.oedometer (input_scripts/oedometer/finish.in):
+# dump local of compute pair/gran/local `pos id force` (id cpgl), columns
+# c_cpgl[1..12] in LIGGGHTS' order: the two centres, the two ids, the
+# periodic flag (1: the pair crosses a periodic face), the force on the first.
+CONTACT_COLUMNS = ("x1", "y1", "z1", "x2", "y2", "z2", "id1", "id2", "periodic",
+                   "fx", "fy", "fz")
+
+
+def read_contacts(path, compute_id="cpgl"):
+    """The last snapshot of final_contacts.txt as {name of CONTACT_COLUMNS:
+    numpy array}; ValueError if its columns are not c_ID[1..12]."""
+    snap = last_snapshot(path)
+    want = ["c_%s[%d]" % (compute_id, k) for k in range(1, len(CONTACT_COLUMNS) + 1)]
+    if snap.columns != want:
+        raise ValueError("%s: columns %s, expected %s (tools/outputs.py)"
+                         % (path, " ".join(snap.columns), " ".join(want)))
+    return {name: snap.col(column) for name, column in zip(CONTACT_COLUMNS, want)}
 
 
 def primary_volume_percent(snapshot):
@@ -324,21 +452,67 @@ def read_rest(path, source=ROOT):
     return out
 
 
+# ---- compute constriction/size's files ------------------------------------
+
+# the columns of the local array (compute_constriction_size.cpp, fill_local;
+# docs/compute_constriction_size.md): one row per constriction
+CONSTRICTION_LOCAL_COLUMNS = ("x", "y", "z", "nx", "ny", "nz", "radius")
+
+
+def constriction_local_name(name, compute_id):
+    """The dump local column of local-array column `name` of compute
+    constriction/size `compute_id`: c_ID[I]."""
+    if name not in CONSTRICTION_LOCAL_COLUMNS:
+        raise ValueError("compute constriction/size has no local column %s (%s)"
+                         % (name, ", ".join(CONSTRICTION_LOCAL_COLUMNS)))
+    return "c_%s[%d]" % (compute_id, CONSTRICTION_LOCAL_COLUMNS.index(name) + 1)
+
+
+# the file of its keyword csd (write_csd): the cumulative CSD, one row per
+# constriction, under the column line '# diameter percent_finer_by_number
+# percent_finer_by_diameter_cubed'
+CSD_COLUMNS = ("diameter", "percent_finer_by_number", "percent_finer_by_diameter_cubed")
+
+
+def read_csd(path):
+    """A csd file of compute constriction/size as {name of CSD_COLUMNS:
+    numpy array} (empty arrays without constrictions); ValueError if its
+    column line is not the table's."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    heads = [l[1:].split() for l in lines if l.startswith("#")]
+    if list(CSD_COLUMNS) not in heads:
+        raise ValueError("%s: no column line '# %s' (tools/outputs.py)"
+                         % (path, " ".join(CSD_COLUMNS)))
+    rows = [[float(v) for v in l.split()] for l in lines
+            if l.strip() and not l.startswith("#")]
+    if any(len(r) != len(CSD_COLUMNS) for r in rows):
+        raise ValueError("%s: rows that are not %d numbers" % (path, len(CSD_COLUMNS)))
+    a = np.array(rows, dtype=float).reshape(len(rows), len(CSD_COLUMNS))
+    return {name: a[:, j] for j, name in enumerate(CSD_COLUMNS)}
+
+
 # ---- the suffusion test's outlet (examples/in.outlet) ----------------------
+
+# the columns of fix massflow/mesh's file (examples/in.outlet), as its
+# column line '# ID diameter x y z u v w ...' names them
+OUTLET_COLUMNS = ("id", "diameter", "x", "y", "z", "u", "v", "w")
+
 
 def read_outlet(path):
     """The grains fix massflow/mesh wrote as they left through the outlet
-    (its `file` keyword: PATH on one rank, PATH.N on N ranks; columns ID
-    diameter x y z u v w), as {"id": array, "diameter": array} sorted by
-    ID; empty arrays if no grain left."""
+    (its `file` keyword: PATH on one rank, PATH.N on N ranks; columns
+    OUTLET_COLUMNS), as {"id": array, "diameter": array} sorted by ID;
+    empty arrays if no grain left."""
     import glob
     files = [path] if os.path.exists(path) else sorted(glob.glob(path + ".*"))
+    k_id, k_d = OUTLET_COLUMNS.index("id"), OUTLET_COLUMNS.index("diameter")
     rows = []
     for f in files:
-        rows += [r for r in data_rows(f) if len(r) >= 2]
-    rows.sort(key=lambda r: int(r[0]))
-    return {"id": np.array([int(r[0]) for r in rows], dtype=int),
-            "diameter": np.array([float(r[1]) for r in rows])}
+        rows += [r for r in data_rows(f) if len(r) > k_d]
+    rows.sort(key=lambda r: int(r[k_id]))
+    return {"id": np.array([int(r[k_id]) for r in rows], dtype=int),
+            "diameter": np.array([float(r[k_d]) for r in rows])}
 
 
 # ---- fix pore/flow ----------------------------------------------------------

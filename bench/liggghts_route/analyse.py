@@ -14,26 +14,25 @@ Prints one line of KEY=VALUE pairs:
   wallmax    largest wall overlap / radius
   z          mean contacts per sphere, counting pairs with a gap below
              1e-6 of the smaller radius (touching or overlapping)
-Pure Python (no numpy): a cell list, a few seconds for 20,000 spheres.
+The measures in pure Python (a cell list, a few seconds for 20,000
+spheres); the dump is read by tools/outputs.py (Debian's python3, numpy).
 
 usage: analyse.py DUMP L [GRID]
 """
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import outputs  # noqa: E402  (the one reader of the project's outputs)
 
 
 def read_dump(path):
-    with open(path) as f:
-        lines = f.read().split('\n')
-    i = lines.index(next(l for l in lines if l.startswith('ITEM: ATOMS')))
-    cols = lines[i].split()[2:]
-    ix, iy, iz, ir = (cols.index(c) for c in ('x', 'y', 'z', 'radius'))
-    out = []
-    for l in lines[i + 1:]:
-        p = l.split()
-        if p:
-            out.append((float(p[ix]), float(p[iy]), float(p[iz]), float(p[ir])))
-    return out
+    """(x, y, z, radius) of each sphere of the dump's last snapshot, the
+    columns by name (tools/outputs.py reads the dump)."""
+    snap = outputs.last_snapshot(path)
+    ix, iy, iz, ir = (snap.index(c) for c in ('x', 'y', 'z', 'radius'))
+    return [(float(p[ix]), float(p[iy]), float(p[iz]), float(p[ir])) for p in snap.rows]
 
 
 def main():

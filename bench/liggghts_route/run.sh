@@ -66,7 +66,7 @@ fi
 
 report() {  # name dir
   local a ke steps capped phases
-  a=$(python3 "$here/analyse.py" "$2/specimen.dump" "$L" 64)
+  a=$(/usr/bin/python3 "$here/analyse.py" "$2/specimen.dump" "$L" 64)
   ke=$(field "$2/screen.txt" "ROUTE final" "KE")
   steps=$(field "$2/screen.txt" "ROUTE final" "step")
   capped=""

@@ -46,6 +46,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import outputs  # noqa: E402  (the one reader of the project's outputs)
 import soils  # noqa: E402  (the shipped soils)
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -70,16 +71,12 @@ def liggghts(script, variables, log):
 
 
 def read_dump(path):
-    with open(path) as f:
-        lines = f.read().split("\n")
-    b = next(i for i, l in enumerate(lines) if l.startswith("ITEM: BOX"))
-    lo = np.array([float(lines[b + 1 + k].split()[0]) for k in range(3)])
-    hi = np.array([float(lines[b + 1 + k].split()[1]) for k in range(3)])
-    a = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    cols = lines[a].split()[2:]
-    data = np.array([[float(x) for x in l.split()] for l in lines[a + 1:] if l.strip()])
-    c = {n: data[:, k] for k, n in enumerate(cols)}
-    return lo, hi, c["radius"], np.stack([c["x"], c["y"], c["z"]], 1)
+    """(box lo, box hi, radii, positions) of the dump's last snapshot, the
+    columns by name (tools/outputs.py reads the dump)."""
+    snap = outputs.last_snapshot(path)
+    lo = np.array([b[0] for b in snap.box])
+    hi = np.array([b[1] for b in snap.box])
+    return lo, hi, snap["radius"], np.stack([snap[c] for c in "xyz"], 1)
 
 
 def contacts(r, p, lo, hi, periodic):

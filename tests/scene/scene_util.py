@@ -302,54 +302,11 @@ def pack_vector(text):
 
 # ---- reading results -----------------------------------------------------
 
-class Snapshot:
-    def __init__(self, timestep, natoms, box, columns, rows):
-        self.timestep = timestep
-        self.natoms = natoms
-        self.box = box              # [(lo, hi)] * 3
-        self.columns = columns      # e.g. ['id', 'type', 'x', ..., 'f_pack']
-        self.rows = rows            # list of token lists, as printed
-
-    def col(self, name, dtype=float):
-        k = self.columns.index(name)
-        return np.array([dtype(r[k]) for r in self.rows])
-
-    def by_id(self):
-        """{id: row tokens}."""
-        k = self.columns.index("id")
-        return {int(r[k]): r for r in self.rows}
-
-
-def read_dump(path):
-    """All snapshots of a `dump custom` text file, in order."""
-    snaps = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        if not lines[i].startswith("ITEM: TIMESTEP"):
-            i += 1
-            continue
-        timestep = int(lines[i + 1])
-        assert lines[i + 2].startswith("ITEM: NUMBER OF ATOMS"), path
-        natoms = int(lines[i + 3])
-        assert lines[i + 4].startswith("ITEM: BOX BOUNDS"), path
-        box = [tuple(float(v) for v in lines[i + 5 + a].split()[:2])
-               for a in range(3)]
-        head = lines[i + 8]
-        assert head.startswith("ITEM: ATOMS"), path
-        columns = head.split()[2:]
-        rows = [l.split() for l in lines[i + 9:i + 9 + natoms]]
-        snaps.append(Snapshot(timestep, natoms, box, columns, rows))
-        i += 9 + natoms
-    return snaps
-
-
-def last_snapshot(path):
-    snaps = read_dump(path)
-    if not snaps:
-        raise ValueError("no snapshot in " + path)
-    return snaps[-1]
+# LAMMPS text dumps: tools/outputs.py reads them (columns by the names of
+# the dump's ITEM: ATOMS / ITEM: ENTRIES line: snap.col("c_pf[2]"))
+Snapshot = outputs.Snapshot
+read_dump = outputs.read_dump
+last_snapshot = outputs.last_snapshot
 
 
 def nlocal_stats(text):
