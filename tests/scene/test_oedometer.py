@@ -76,7 +76,7 @@ fix w_lid all wall/gran ${{wm}} mesh n_meshes 1 meshes lid store_force_contact_s
 compute pf all primary/fabric
 fix integr all nve/sphere
 timestep 1e-9
-dump d all custom 1 {dump} id c_pf[1] c_pf[2]
+dump d all custom 1 {dump} id {columns}
 dump_modify d sort id
 run 0
 """
@@ -114,11 +114,10 @@ def check_scene_positions(args, chk):
               "pack_outputs.h it means", not wrong, "\n".join(wrong))
 
 
-def main():
-    args = su.parse_args(__doc__)
-    su.fresh_dir(args.work)
-    chk = su.Checker()
-    check_scene_positions(args, chk)
+def run_scene(args, chk):
+    """1. The scene's run: it ends at rest, the lid stress near the
+    target; the run and its output folder (None if it did not run) and the
+    STOP line's lid stress."""
     out = os.path.join(args.work, "run")
     res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
                           variables={"out": out, "every": 2000, "side": 2.75, "kn": KN},
@@ -127,16 +126,19 @@ def main():
     if not chk.check("the oedometer scene runs (%.0f s)" % res.seconds,
                      res.returncode == 0, res.describe()):
         chk.finish()
-    text = res.text
-    stop = [l for l in text.splitlines() if l.startswith("STOP:")]
+    stop = [l for l in res.text.splitlines() if l.startswith("STOP:")]
     chk.check("it stops at rest", stop and stop[-1].startswith("STOP: at rest")
               and "kinetic energy" in stop[-1] and "unbalanced-force ratio" in stop[-1], stop)
     m = re.search(r"lid stress ([-0-9.eE+]+) Pa", stop[-1] if stop else "")
     sigma = float(m.group(1)) if m else float("nan")
     chk.check("lid stress %.0f Pa within 5 %% of %.0f Pa" % (sigma, STRESS),
               abs(sigma / STRESS - 1) < 0.05)
-    # the outputs the tools read by name: the series' columns are
-    # outputs.SERIES_COLUMNS, rest.txt is fix servo/rest's vector
+    return res, out, sigma
+
+
+def check_series_rest(chk, out, sigma):
+    """The outputs the tools read by name: the series' columns are
+    outputs.SERIES_COLUMNS, rest.txt is fix servo/rest's vector."""
     try:
         series = su.outputs.read_series(os.path.join(out, "fabric_series.txt"))
         rest = su.outputs.read_rest(os.path.join(out, "rest.txt"))
@@ -149,49 +151,59 @@ def main():
     chk.check("fabric_series.txt has the columns of outputs.SERIES_COLUMNS, its last row the "
               "step of rest.txt (fix servo/rest's vector: at rest, the STOP line's stress)", ok, why)
 
-    # Independent recount.
-    lid = re.search(r"LID: z_lid ([-0-9.eE+]+) m, container edge ([-0-9.eE+]+) m", text)
-    zlid, L = float(lid.group(1)), float(lid.group(2))
-    grains = su.last_snapshot(os.path.join(out, "final.dump"))
-    ids = grains.col("id", int)
-    x, y, z, r = (grains.col(c) for c in ("x", "y", "z", "radius"))
-    cls = grains.col("c_pf[2]", lambda v: int(float(v)))
-    index = {i: k for k, i in enumerate(ids)}
-    rows = []
-    with open(os.path.join(out, "final_contacts.txt")) as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.startswith("ITEM: ENTRIES")) + 1
-    for l in lines[start:]:
-        v = l.split()
-        if len(v) == 12:
-            rows.append([float(t) for t in v])
-    c = np.array(rows).reshape(-1, 12)
-    branch = c[:, 0:3] - c[:, 3:6]
-    dist = np.linalg.norm(branch, axis=1)
-    fn_pp = np.einsum("ij,ij->i", c[:, 9:12], branch) / dist
-    # walls: overlap of each grain with the five planes and the lid, and the
-    # contact normal n (wall to grain); F.n = kn overlap - gamman m v.n
-    mass = grains.col("mass")
-    vel = np.stack([grains.col(c) for c in ("vx", "vy", "vz")], axis=1)
-    # the lid's contacts damp with gn_wall, the fixed walls' with the grains' G_n
-    gn_wall = float(re.search(r"^variable gn_wall\s+index\s+(\S+)",
-                              su.oedometer_text(args.source), re.M).group(1))
-    gn_grain = float(re.search(r"DAMPING: G_n = ([-0-9.eE+]+) 1/s", text).group(1))
+
+def particle_contacts(out):
+    """The grain contacts of final_contacts.txt, read by name: (ids as an
+    n x 2 array, normal force F.n with n from the second grain to the
+    first)."""
+    c = su.outputs.read_contacts(os.path.join(out, "final_contacts.txt"))
+    branch = np.stack([c["x1"] - c["x2"], c["y1"] - c["y2"], c["z1"] - c["z2"]], axis=1)
+    force = np.stack([c["fx"], c["fy"], c["fz"]], axis=1)
+    fn = np.einsum("ij,ij->i", force, branch) / np.linalg.norm(branch, axis=1)
+    return np.stack([c["id1"], c["id2"]], axis=1).astype(int), fn
+
+
+def wall_contacts(g, L, zlid, gn_wall, gn_grain):
+    """Per wall (x 0, x L, y 0, y L, top L, the lid), each grain's normal
+    force from the overlap and its velocity: F.n = kn overlap - gamman m
+    v.n, n from the wall to the grain; nan where there is no overlap. The
+    lid's contacts damp with gn_wall, the fixed walls' with the grains' G_n."""
+    x, y, z, r = g["x"], g["y"], g["z"], g["radius"]
+    vel = np.stack([g["vx"], g["vy"], g["vz"]], axis=1)
     walls = [(x, (1, 0, 0)), (L - x, (-1, 0, 0)), (y, (0, 1, 0)),
              (L - y, (0, -1, 0)), (L - z, (0, 0, -1)), (z - zlid, (0, 0, 1))]
     fn_w = []
     for k, (gap, n) in enumerate(walls):
         overlap = r - gap
         vn = vel @ np.array(n, float)
-        g = gn_wall if k == 5 else gn_grain
-        f = np.where(overlap > 0, KN * overlap - g * mass * vn, np.nan)
-        fn_w.append(f)
+        damp = gn_wall if k == 5 else gn_grain
+        fn_w.append(np.where(overlap > 0, KN * overlap - damp * g["mass"] * vn, np.nan))
+    return fn_w
+
+
+def recount(args, out, text):
+    """2. The independent recount of the final state (final.dump and
+    final_contacts.txt, columns by name): a dict of the grains (ids, the
+    compute's class, mass), the contacts' forces, the mean, the threshold,
+    the loaded contacts and the recount's class per grain."""
+    lid = re.search(r"LID: z_lid ([-0-9.eE+]+) m, container edge ([-0-9.eE+]+) m", text)
+    zlid, L = float(lid.group(1)), float(lid.group(2))
+    snap = su.last_snapshot(os.path.join(out, "final.dump"))
+    g = {c: snap.col(c) for c in ("x", "y", "z", "radius", "mass", "vx", "vy", "vz")}
+    ids = snap.col("id", int)
+    cls = snap.col(su.outputs.PRIMARY, lambda v: int(float(v)))
+    pairs, fn_pp = particle_contacts(out)
+    gn_wall = float(re.search(r"^variable gn_wall\s+index\s+(\S+)",
+                              su.oedometer_text(args.source), re.M).group(1))
+    gn_grain = float(re.search(r"DAMPING: G_n = ([-0-9.eE+]+) 1/s", text).group(1))
+    fn_w = wall_contacts(g, L, zlid, gn_wall, gn_grain)
     wall_forces = np.concatenate([f[~np.isnan(f)] for f in fn_w])
     mean = (fn_pp.sum() + wall_forces.sum()) / (len(fn_pp) + len(wall_forces))
     thr = 1e-3 * max(mean, 0.0)
+    index = {i: k for k, i in enumerate(ids)}
     loaded = np.zeros(len(ids), int)
     nloaded = 0
-    for (a, b), f in zip(c[:, 6:8].astype(int), fn_pp):
+    for (a, b), f in zip(pairs, fn_pp):
         if f > thr:
             loaded[index[a]] += 1
             loaded[index[b]] += 1
@@ -200,23 +212,34 @@ def main():
         hit = np.nan_to_num(f, nan=-np.inf) > thr
         loaded += hit.astype(int)
         nloaded += int(hit.sum())
-    recount = (loaded >= 3).astype(int)
-    both = int(np.sum((recount == 1) & (cls == 1)))
+    return {"ids": ids, "cls": cls, "mass": g["mass"], "n_pp": len(fn_pp),
+            "n_wall": len(wall_forces), "mean": mean, "thr": thr, "nloaded": nloaded,
+            "recount": (loaded >= 3).astype(int), "zlid": zlid, "L": L, "gn_wall": gn_wall}
+
+
+def check_recount(chk, rc):
+    """2. The compute's primary set against the recount's, grain by grain."""
+    cls, rec = rc["cls"], rc["recount"]
+    both = int(np.sum((rec == 1) & (cls == 1)))
     precision = both / max(1, int(cls.sum()))     # of the compute's primary
-    recall = both / max(1, int(recount.sum()))    # of the recount's primary
+    recall = both / max(1, int(rec.sum()))        # of the recount's primary
     chk.note("%d grains, %d particle contacts, %d wall contacts, mean normal force %.4g N; "
              "primary: compute %d, recount %d, both %d"
-             % (len(ids), len(fn_pp), len(wall_forces), mean, cls.sum(), recount.sum(), both))
+             % (len(rc["ids"]), rc["n_pp"], rc["n_wall"], rc["mean"], cls.sum(), rec.sum(), both))
     # grain for grain: the recount's wall forces are rebuilt from the linear
     # model and may differ from the stored ones in the last digits, which no
     # grain's class depends on here (measured: 136 primary, all 136 shared)
     chk.check("primary fabric: precision %.2f %% and recall %.2f %% of the compute's "
               "primary set against the recount (both 100 %%)"
               % (100 * precision, 100 * recall),
-              precision == 1 and recall == 1 and recount.sum() > 10)
+              precision == 1 and recall == 1 and rec.sum() > 10)
     chk.check("the specimen carries load: some grains are primary fabric", cls.sum() > 10)
-    # The global figures of the compute (fabric_global.txt: step, then the
-    # vector) against the recount.
+
+
+def check_files_layout(args, chk, out):
+    """4. fabric_global.txt and fabric_intervals.txt have the layout of
+    fabric_outputs.h (the intervals' first column is fix ave/time's row
+    number)."""
     outputs = su.outputs
     gl = outputs.data_rows(os.path.join(out, "fabric_global.txt"))
     want_len = outputs.fabric_vector_size(9, args.source)
@@ -231,53 +254,93 @@ def main():
               "fabric_outputs.h" % ncols,
               len(last) == 20 and all(len(r) == 1 + ncols for r in last)
               and [r[0] for r in last] == list(range(1, 21)))
-    v = [float(t) for t in gl[-1][1:]]
-    n = len(ids)
-    primary_mass = 100 * mass[recount == 1].sum() / mass.sum()
-    # the classes exactly (to the 6 digits of the file); the force sums to the
-    # rebuilt wall forces' accuracy
-    want = [("particles", 1, n, 0), ("loose particles", 2, n - recount.sum(), 0),
-            ("loose % by number", 3, 100 * (1 - recount.mean()), 1e-4),
-            ("primary % by mass", 4, primary_mass, 1e-4),
-            ("contacts", 10, len(fn_pp) + len(wall_forces), 0.005 * (len(fn_pp) + len(wall_forces))),
-            ("loaded contacts", 11, nloaded, 0.01 * nloaded),
-            ("mean normal force", 12, mean, 0.01 * mean),
-            ("threshold force", 13, thr, 0.01 * thr)]
-    bad = ["%s (entry %d): compute %.6g, recount %.6g" % (w, k, v[k - 1], e)
-           for w, k, e, tol in want if not abs(v[k - 1] - e) <= tol + 1e-6 * abs(e)]
+
+
+def check_global_figures(args, chk, out, rc):
+    """2. The compute's global figures (fabric_global.txt, by the names of
+    fabric_outputs.h) against the recount: the classes exactly (to the 6
+    digits of the file); the force sums to the rebuilt wall forces'
+    accuracy."""
+    v = su.outputs.read_global(os.path.join(out, "fabric_global.txt"), args.source)
+    pos = su.outputs.index(su.outputs.fabric_vector(args.source))
+    rec, mass, n = rc["recount"], rc["mass"], len(rc["ids"])
+    contacts = rc["n_pp"] + rc["n_wall"]
+    want = [("particles", n, 0),
+            ("loose_particles", n - rec.sum(), 0),
+            ("loose_percent_by_number", 100 * (1 - rec.mean()), 1e-4),
+            ("primary_percent_by_mass", 100 * mass[rec == 1].sum() / mass.sum(), 1e-4),
+            ("contacts", contacts, 0.005 * contacts),
+            ("loaded_contacts", rc["nloaded"], 0.01 * rc["nloaded"]),
+            ("mean_normal_force", rc["mean"], 0.01 * rc["mean"]),
+            ("threshold_force", rc["thr"], 0.01 * rc["thr"])]
+    bad = ["fabric_global.txt is missing or short"] if v is None else [
+        "%s (entry %d): compute %.6g, recount %.6g" % (name, pos[name] + 1, v[pos[name]], e)
+        for name, e, tol in want if not abs(v[pos[name]] - e) <= tol + 1e-6 * abs(e)]
     chk.check("global figures agree with the recount: particles, loose, loose %, "
               "primary % by mass, contacts, loaded contacts, mean normal force, "
               "threshold", not bad, "\n".join(bad))
 
-    # The same state on 1 and 2 ranks.
+
+def classes_on_ranks(args, chk, out, text, rc, nprocs, processors):
+    """3. The final state read back from the restart file on `nprocs`
+    ranks: {id: class}, or None if the run failed."""
     dmp = re.search(r"DAMPING: G_n = ([-0-9.eE+]+) 1/s, G_t = ([-0-9.eE+]+) 1/s", text)
-    classes = {}
-    for n, proc in ((None, ""), (2, "2 1 1")):
-        dump = os.path.join(args.work, "state_%s.dump" % (n or 1))
-        inp = su.write_file(os.path.join(args.work, "in.state_%s" % (n or 1)), RESTART.format(
-            preamble=su.preamble(processors=proc or None), restart=os.path.join(out, "final.restart"), gn=dmp.group(1),
-            gt=dmp.group(2), gn_wall=su.num(gn_wall), gt_wall=su.num(0.5 * gn_wall), L=su.num(L), hL=su.num(L / 2), zlid=su.num(zlid),
-            mesh=os.path.join(args.source, "input_scripts", "meshes", "lid.stl"), dump=dump))
-        r2 = su.run_launcher(args, inp, nprocs=n, timeout=300)
-        if chk.check("final state read back on %d rank(s)" % (n or 1), r2.returncode == 0,
+    ranks = nprocs or 1
+    dump = os.path.join(args.work, "state_%s.dump" % ranks)
+    L, gn_wall = rc["L"], rc["gn_wall"]
+    inp = su.write_file(os.path.join(args.work, "in.state_%s" % ranks), RESTART.format(
+        preamble=su.preamble(processors=processors), restart=os.path.join(out, "final.restart"),
+        gn=dmp.group(1), gt=dmp.group(2), gn_wall=su.num(gn_wall), gt_wall=su.num(0.5 * gn_wall),
+        L=su.num(L), hL=su.num(L / 2), zlid=su.num(rc["zlid"]),
+        mesh=os.path.join(args.source, "input_scripts", "meshes", "lid.stl"), dump=dump,
+        columns=" ".join(su.outputs.peratom_name(c) for c in ("loaded_contacts", "primary"))))
+    r2 = su.run_launcher(args, inp, nprocs=nprocs, timeout=300)
+    if not chk.check("final state read back on %d rank(s)" % ranks, r2.returncode == 0,
                      r2.describe()):
-            s = su.last_snapshot(dump)
-            classes[n or 1] = dict(zip(s.col("id", int), s.col("c_pf[2]", lambda v: int(float(v)))))
-    if len(classes) == 2:
-        same = sum(classes[1][i] == classes[2].get(i) for i in classes[1])
-        chk.check("1 and 2 ranks (processors 2 1 1): same class for %d of %d grains"
-                  % (same, len(classes[1])), same == len(classes[1]) and len(classes[2]) == len(classes[1]))
-        rerun = sum(classes[1].get(i) == k for i, k in zip(ids, cls))
-        chk.check("read back on 1 rank vs the run itself: same class for %d of %d grains"
-                  % (rerun, len(ids)), rerun == len(ids))
-    # The paper's figures from this run: every figure drawn, no column or
-    # entry missing (the series' title line, the global vector's layout).
+        return None
+    s = su.last_snapshot(dump)
+    return dict(zip(s.col("id", int), s.col(su.outputs.PRIMARY, lambda v: int(float(v)))))
+
+
+def check_ranks(args, chk, out, text, rc):
+    """3. The same state on 1 and 2 ranks (processors 2 1 1), and as the
+    run itself has it."""
+    one = classes_on_ranks(args, chk, out, text, rc, None, None)
+    two = classes_on_ranks(args, chk, out, text, rc, 2, "2 1 1")
+    if one is None or two is None:
+        return
+    same = sum(one[i] == two.get(i) for i in one)
+    chk.check("1 and 2 ranks (processors 2 1 1): same class for %d of %d grains"
+              % (same, len(one)), same == len(one) and len(two) == len(one))
+    rerun = sum(one.get(i) == k for i, k in zip(rc["ids"], rc["cls"]))
+    chk.check("read back on 1 rank vs the run itself: same class for %d of %d grains"
+              % (rerun, len(rc["ids"])), rerun == len(rc["ids"]))
+
+
+def check_plots(args, chk, out):
+    """5. The paper's figures from this run: every figure drawn, no column
+    or entry missing (the series' title line, the global vector's layout)."""
     plot = subprocess.run(["/usr/bin/python3", os.path.join(args.source, "tools", "plot_fabric.py"), out],
                           capture_output=True, text=True, timeout=300)
     pngs = [f for f in os.listdir(out) if f.startswith("fig") and f.endswith(".png")]
     chk.check("tools/plot_fabric.py draws the 7 figures without a warning (%d PNG)" % len(pngs),
               plot.returncode == 0 and "warning" not in plot.stderr + plot.stdout and len(pngs) == 7,
               plot.stderr[-1500:])
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    check_scene_positions(args, chk)
+    res, out, sigma = run_scene(args, chk)
+    check_series_rest(chk, out, sigma)
+    rc = recount(args, out, res.text)
+    check_recount(chk, rc)
+    check_files_layout(args, chk, out)
+    check_global_figures(args, chk, out, rc)
+    check_ranks(args, chk, out, res.text, rc)
+    check_plots(args, chk, out)
     chk.finish()
 
 

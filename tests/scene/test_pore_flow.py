@@ -36,6 +36,12 @@ import scene_util as su
 THERMO = "thermo_style    custom step atoms f_flow[1] f_flow[2] f_flow[3] f_flow[4] f_flow[6]"
 
 
+# the dump's columns (measured()): the grain, and the fix's per-atom fluid
+# force x, y, z (f_ID[1..3], docs/fix_pore_flow.md)
+GRAIN = ["id", "x", "y", "z", "radius"]
+FLOW_FORCE = ["f_flow[1]", "f_flow[2]", "f_flow[3]"]
+
+
 def page_blocks(args):
     with open(os.path.join(args.source, "docs", "fix_pore_flow.md")) as f:
         text = f.read()
@@ -77,7 +83,8 @@ def measured(scene, dump, extra_fix=""):
 
 
 def run_measured(args, chk, root, scene, name, nprocs=None, extra_fix=""):
-    """(vector by name, [sum fx fy fz, sum f_flow 1..3], dump array) or None."""
+    """(vector by name, [sum fx fy fz, sum f_flow 1..3], the dump's
+    snapshot: columns by name, outputs.Snapshot) or None."""
     dump = os.path.join(root, name + ".dump")
     inp = su.write_file(os.path.join(root, name + ".in"), measured(scene, dump, extra_fix))
     res = su.run_launcher(args, inp, nprocs=nprocs, cwd=root)
@@ -88,7 +95,7 @@ def run_measured(args, chk, root, scene, name, nprocs=None, extra_fix=""):
                      and os.path.isfile(dump), res.describe()):
         return None
     vec = dict(zip(names, row[:len(names)]))
-    return vec, row[len(names):], np.loadtxt(dump, skiprows=9, ndmin=2)
+    return vec, row[len(names):], su.outputs.last_snapshot(dump)
 
 
 def rel(a, b):
@@ -108,11 +115,11 @@ def check_balance(chk, vec, sums, grains, what, axis, area):
               rel(sums[axis], vec["fluid_force"]) < 1e-6
               and rel(sums[3 + axis], vec["fluid_force"]) < 1e-9)
     chk.check("%s: the dump's per-grain forces sum to the total too" % what,
-              rel(grains[:, 5 + axis].sum(), vec["fluid_force"]) < 1e-9)
+              rel(grains[FLOW_FORCE[axis]].sum(), vec["fluid_force"]) < 1e-9)
 
 
 def check_permeability(args, chk, root, vec, grains, side):
-    r = grains[:, 4]
+    r = grains["radius"]
     n = 1.0 - (4.0 / 3.0 * np.pi * r ** 3).sum() / side ** 3
     d = 2.0 * (r ** 3).sum() / (r ** 2).sum()
     kc = d ** 2 * n ** 3 / (180.0 * (1.0 - n) ** 2)
@@ -127,8 +134,8 @@ def check_permeability(args, chk, root, vec, grains, side):
     spheres = os.path.join(root, "spheres.txt")
     with open(spheres, "w") as f:
         f.write("0 0 0 %r %r %r\n" % (side, side, side))
-        for g in grains:
-            f.write("%.17g %.17g %.17g %.17g\n" % tuple(g[1:5]))
+        for g in zip(*(grains[c] for c in ("x", "y", "z", "radius"))):
+            f.write("%.17g %.17g %.17g %.17g\n" % g)
     out = subprocess.run([bench, "solve", spheres, "1000", "0", "1e-3",
                           os.path.join(root, "cells.txt"), os.path.join(root, "forces.txt")],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
@@ -148,12 +155,13 @@ def check_ranks(args, chk, root, scene, one):
     chk.check("1 and 2 ranks: %s agree to 1e-9 (worst %.2g; iterations %d and %d)"
               % (", ".join(names), worst, one[0]["iterations"], two[0]["iterations"]),
               worst < 1e-9)
-    a, b = one[2], two[2]
-    scale = np.abs(a[:, 5:8]).max()
-    diff = np.abs(a[:, 5:8] - b[:, 5:8]).max() / scale if a.shape == b.shape else np.inf
+    a, b = (np.column_stack([s[c] for c in GRAIN + FLOW_FORCE]) for s in (one[2], two[2]))
+    n = len(GRAIN)
+    scale = np.abs(a[:, n:]).max()
+    diff = np.abs(a[:, n:] - b[:, n:]).max() / scale if a.shape == b.shape else np.inf
     chk.check("1 and 2 ranks: the same grains (%d) and force per grain to 1e-9 of the "
               "largest (%.2g)" % (len(a), diff),
-              a.shape == b.shape and np.array_equal(a[:, :5], b[:, :5]) and diff < 1e-9)
+              a.shape == b.shape and np.array_equal(a[:, :n], b[:, :n]) and diff < 1e-9)
 
 
 def check_every(args, chk, root, scene):
