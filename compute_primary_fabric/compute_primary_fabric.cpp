@@ -88,7 +88,7 @@ ComputePrimaryFabric::ComputePrimaryFabric(LAMMPS *lmp, int iarg, int narg,
   peratom_flag = 1;
   size_peratom_cols = fabric::kPeratomColumns;
   vector_flag = 1;
-  size_vector = fabric::vector_size(options_.direction_bins);
+  size_vector = fabric::vector_size(options_.direction_bins, nslices_);
   extvector = 0;
   array_flag = 1;
   size_array_rows = nintervals_;
@@ -115,7 +115,7 @@ void ComputePrimaryFabric::parse(int narg, char **arg) {
                        {"min_contacts", "force_threshold", "prune",
                         "intervals", "intervals_from", "psd", "walls",
                         "direction_bins", "walls_in_fabric", "max_iterations",
-                        "oz_tolerance", "store_every", "weight"});
+                        "oz_tolerance", "store_every", "weight", "slices"});
   for (int i = 0; i < narg;) i = read_keyword(args, i);
   if (!psd_file_.empty()) read_psd(args);
 }
@@ -154,6 +154,8 @@ int ComputePrimaryFabric::read_keyword(const StyleArgs &args, int i) {
                  i, "must lie in [0, 1)");
   } else if (kw == "weight") {
     weigh_volume_ = args.choice(i, {"mass", "volume"}) == 1;
+  } else if (kw == "slices") {
+    nslices_ = static_cast<int>(args.integer_in(i, 1, 1000));
   } else if (kw == "store_every") {
     store_every_ = args.integer_in(i, 1, 1000000000);
   } else if (kw == "max_iterations") {
@@ -423,6 +425,7 @@ void ComputePrimaryFabric::collect_particles(Step &step) {
     step.index[i] = static_cast<int>(step.particles.size());
     step.particles.push_back({static_cast<long long>(atom->tag[i]),
                               atom->radius[i], weight(i), k});
+    step.z.push_back(atom->x[i][2]);
   }
   stop_on_bad_index(bad_index, bad_value);
   stop_on_outside(outside, outside_d);
@@ -579,6 +582,7 @@ void ComputePrimaryFabric::classify(const Step &step) {
   MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
                 world);
   summary_ = fabric::finalise(total, step.representative, options_.oz_tolerance);
+  if (nslices_ > 0) slice(step, cls);
 
   for (int i = 0; i < atom->nlocal; ++i) {
     if (step.index[i] < 0) continue;
@@ -592,6 +596,24 @@ void ComputePrimaryFabric::classify(const Step &step) {
   }
 }
 
+// The figures of each height slice (keyword slices): the grains' extent
+// along z over all ranks, then each rank's sums of its grains, reduced.
+void ComputePrimaryFabric::slice(const Step &step,
+                                 const fabric::Classification &cls) {
+  const fabric::HeightExtent mine = fabric::height_extent(step.particles, step.z);
+  fabric::HeightExtent all{};
+  MPI_Allreduce(&mine.bottom, &all.bottom, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&mine.top, &all.top, 1, MPI_DOUBLE, MPI_MAX, world);
+  const fabric::HeightSlices slices(all, nslices_);
+  fabric::SliceSums sums = fabric::accumulate_slices(
+      step.particles, step.z, step.contacts, step.walls, cls, threshold_force_,
+      slices, options_);
+  fabric::SliceSums total(nslices_);
+  MPI_Allreduce(sums.data(), total.data(), sums.size(), MPI_DOUBLE, MPI_SUM,
+                world);
+  slices_ = fabric::finalise_slices(total, slices);
+}
+
 void ComputePrimaryFabric::compute_peratom() {
   invoked_peratom = update->ntimestep;
   analyse();
@@ -602,7 +624,8 @@ void ComputePrimaryFabric::compute_vector() {
   analyse();
   // Layout: fabric_outputs.h.
   const std::vector<double> v = fabric::global_vector(
-      summary_, threshold_force_, iterations_, options_.direction_bins);
+      summary_, threshold_force_, iterations_, options_.direction_bins,
+      slices_);
   std::copy(v.begin(), v.end(), vector);
 }
 

@@ -19,6 +19,7 @@ ComputeStyle(primary/fabric,ComputePrimaryFabric)
 
 #include "compute.h"
 #include "fabric_analysis.h"
+#include "height_slices.h"
 #include "interval_assignment.h"
 
 namespace LAMMPS_NS {
@@ -45,6 +46,7 @@ class ComputePrimaryFabric : public Compute {
   struct Step {
     std::vector<int> index;  // per local atom: its particle, -1 none
     std::vector<fabric::Particle> particles;
+    std::vector<double> z;   // each particle's height (its centre's z)
     std::vector<fabric::ParticleContact> contacts;
     std::vector<int> partner;  // local or ghost index of each contact's partner
     std::vector<fabric::WallContact> walls;
@@ -60,6 +62,7 @@ class ComputePrimaryFabric : public Compute {
   void warn_nonfinite();
   void collect_contacts(Step &);
   void classify(const Step &);
+  void slice(const Step &, const fabric::Classification &);
   void assign_intervals();
   fabric::IntervalAssignment interval_assignment(
       std::vector<double> &representative);
@@ -83,6 +86,8 @@ class ComputePrimaryFabric : public Compute {
 
   bigint analysed_step_;
   fabric::FabricSummary summary_;
+  int nslices_ = 0;  // keyword slices: height slices reported (0: none)
+  std::vector<fabric::SliceSummary> slices_;
   double threshold_force_;
   bool weigh_volume_ = false;  // weight volume: "by mass" weighs volumes
   int iterations_;

@@ -66,12 +66,32 @@ double column_value(ArrayColumn c, const IntervalSummary& r) {
   return 0.0;
 }
 
+double slice_value(SliceEntry e, const SliceSummary& r) {
+  switch (e) {
+    case SliceEntry::slice_bottom: return r.lower;
+    case SliceEntry::slice_top: return r.upper;
+    case SliceEntry::slice_particles: return r.particles;
+    case SliceEntry::slice_mass_percent: return r.mass_percent;
+    case SliceEntry::slice_primary_percent: return r.primary_percent;
+    case SliceEntry::slice_loose_percent_by_number:
+      return r.loose_percent_by_number;
+    case SliceEntry::slice_coordination: return r.coordination;
+    case SliceEntry::slice_fabric_contacts: return r.fabric_contacts;
+    case SliceEntry::slice_fabric_anisotropy: return r.fabric_anisotropy;
+    case SliceEntry::slice_force_anisotropy: return r.force_anisotropy;
+    case SliceEntry::count: break;
+  }
+  return 0.0;
+}
+
 }  // namespace
 
 std::vector<double> global_vector(const FabricSummary& s,
                                   double threshold_force, int prune_passes,
-                                  int direction_bins) {
-  std::vector<double> v(vector_size(direction_bins), 0.0);
+                                  int direction_bins,
+                                  const std::vector<SliceSummary>& slices) {
+  const int nslices = static_cast<int>(slices.size());
+  std::vector<double> v(vector_size(direction_bins, nslices), 0.0);
   for (int e = 0; e < kVectorFixedEntries; ++e)
     v[e] = vector_value(static_cast<VectorEntry>(e), s, threshold_force,
                         prune_passes);
@@ -79,6 +99,12 @@ std::vector<double> global_vector(const FabricSummary& s,
     if (b < static_cast<int>(s.directions.size())) {
       v[kVectorFixedEntries + 2 * b] = s.directions[b].contact_fraction;
       v[kVectorFixedEntries + 2 * b + 1] = s.directions[b].mean_normal_force;
+    }
+  for (int k = 0; k < nslices; ++k)
+    for (int e = 0; e < kSliceEntries; ++e) {
+      const SliceEntry entry = static_cast<SliceEntry>(e);
+      v[slice_position(direction_bins, k + 1, entry) - 1] =
+          slice_value(entry, slices[k]);
     }
   return v;
 }

@@ -2,7 +2,8 @@
 // and meaning of every entry of its global vector and of every column of its
 // global array (one row per size interval). The compute fills them from
 // these tables, docs/compute_primary_fabric.md quotes them (a test compares
-// the two) and tools/plot_fabric.py reads them from this file.
+// the two) and tools/outputs.py reads them from this file (tools/plot_fabric.py,
+// tools/fabric_layers.py).
 //
 // Format (kept simple for those readers): one X(position, name, "meaning")
 // per line; positions count from 1, as c_ID[I] and c_ID[I][J] do.
@@ -13,11 +14,14 @@
 #include <vector>
 
 #include "fabric_analysis.h"
+#include "height_slices.h"
 #include "output_table.h"
 
 // Global vector, entries 1..31; then two entries per direction bin k = 1..M:
 // 31 + 2k - 1 the fraction of the loaded contacts in bin k, 31 + 2k their
-// mean normal force.
+// mean normal force; then, with the keyword slices S, the entries of
+// FABRIC_SLICE_ENTRIES for each height slice s = 1..S (the lowest first):
+// entry J of slice s at 31 + 2M + (s - 1) K + J, K the entries of that table.
 #define FABRIC_VECTOR_ENTRIES(X)                                               \
   X(1, particles, "particles of the group")                                    \
   X(2, loose_particles, "loose particles")                                     \
@@ -51,6 +55,23 @@
   X(30, r2_tolerant, "r2 with oz_tolerance: coarsest interval above it in loose mass") \
   X(31, overlapping_zone_tolerant_percent, "overlapping zone with oz_tolerance, % of the mass")
 
+// Global vector, with slices S: per height slice (heights of equal span
+// along z from the lowest grain's bottom to the highest grain's top; a grain
+// in the slice of its centre), these entries. The classification is the
+// whole group's; a slice selects the grains of its figures
+// (height_slices.h).
+#define FABRIC_SLICE_ENTRIES(X)                                                \
+  X(1, slice_bottom, "lower bound z of the slice")                             \
+  X(2, slice_top, "upper bound z of the slice")                                \
+  X(3, slice_particles, "particles with their centre in the slice")            \
+  X(4, slice_mass_percent, "the slice's mass, % of the group's mass")          \
+  X(5, slice_primary_percent, "primary fabric, % of the slice's mass")         \
+  X(6, slice_loose_percent_by_number, "loose particles, % of the slice's particles") \
+  X(7, slice_coordination, "loaded contacts per particle of the slice")        \
+  X(8, slice_fabric_contacts, "loaded contacts of its particles in its F (one with another slice's particle counts half)") \
+  X(9, slice_fabric_anisotropy, "a_c of the slice's loaded contacts")          \
+  X(10, slice_force_anisotropy, "a_n of the slice's loaded contacts")
+
 // Per-atom array: one row per atom, these columns (0 for an atom outside
 // the group).
 #define FABRIC_PERATOM_COLUMNS(X)                                              \
@@ -74,36 +95,48 @@ namespace fabric {
 enum class VectorEntry { FABRIC_VECTOR_ENTRIES(FABRIC_OUTPUT_NAME) count };
 enum class ArrayColumn { FABRIC_ARRAY_COLUMNS(FABRIC_OUTPUT_NAME) count };
 enum class PeratomColumn { FABRIC_PERATOM_COLUMNS(FABRIC_OUTPUT_NAME) count };
+enum class SliceEntry { FABRIC_SLICE_ENTRIES(FABRIC_OUTPUT_NAME) count };
 
 constexpr int kVectorFixedEntries = static_cast<int>(VectorEntry::count);
 constexpr int kArrayColumns = static_cast<int>(ArrayColumn::count);
 constexpr int kPeratomColumns = static_cast<int>(PeratomColumn::count);
+constexpr int kSliceEntries = static_cast<int>(SliceEntry::count);
 
 constexpr int kVectorPositions[] = {
     FABRIC_VECTOR_ENTRIES(FABRIC_OUTPUT_POSITION)};
 constexpr int kArrayPositions[] = {FABRIC_ARRAY_COLUMNS(FABRIC_OUTPUT_POSITION)};
 constexpr int kPeratomPositions[] = {FABRIC_PERATOM_COLUMNS(FABRIC_OUTPUT_POSITION)};
+constexpr int kSlicePositions[] = {FABRIC_SLICE_ENTRIES(FABRIC_OUTPUT_POSITION)};
 static_assert(counts_from_one(kVectorPositions),
               "fabric_outputs.h: the vector positions must count 1, 2, 3 ...");
 static_assert(counts_from_one(kArrayPositions),
               "fabric_outputs.h: the array positions must count 1, 2, 3 ...");
 static_assert(counts_from_one(kPeratomPositions),
               "fabric_outputs.h: the per-atom positions must count 1, 2, 3 ...");
+static_assert(counts_from_one(kSlicePositions),
+              "fabric_outputs.h: the slice positions must count 1, 2, 3 ...");
 
 // Column c of the per-atom array, counted from 0 as array_atom counts.
 constexpr int peratom_column(PeratomColumn c) { return static_cast<int>(c); }
 
-// Size of the global vector with M direction bins.
-inline int vector_size(int direction_bins) {
-  return kVectorFixedEntries + 2 * direction_bins;
+// Size of the global vector with M direction bins and S height slices.
+inline int vector_size(int direction_bins, int slices = 0) {
+  return kVectorFixedEntries + 2 * direction_bins + kSliceEntries * slices;
+}
+
+// Position (from 1, as c_ID[I]) of entry e of height slice s (from 1).
+inline int slice_position(int direction_bins, int s, SliceEntry e) {
+  return kVectorFixedEntries + 2 * direction_bins + (s - 1) * kSliceEntries +
+         static_cast<int>(e) + 1;
 }
 
 // The global vector: the 31 entries, then (fraction, mean normal force) per
 // direction bin, M = direction_bins entries of summary.directions (missing
-// bins are 0).
+// bins are 0), then the entries of each height slice of `slices`.
 std::vector<double> global_vector(const FabricSummary& summary,
                                   double threshold_force, int prune_passes,
-                                  int direction_bins);
+                                  int direction_bins,
+                                  const std::vector<SliceSummary>& slices = {});
 // One row of the global array.
 std::array<double, kArrayColumns> interval_row(const IntervalSummary& row);
 
