@@ -11,7 +11,7 @@ specimen. Writes, into --dest:
   fig_NAME.png          PSD, PFD, LPD and the two CSDs on one size axis
 
     /usr/bin/python3 tools/constriction_verdict.py --study out/small \
-        --launcher build/liggghts-fabric --dest results/constriction/small
+        --launcher build/liggghts-fabric --dest results/constrictions/small
 """
 import argparse
 import csv

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The hold diagnosis: what makes the oedometer specimen lose its stress when
-the lid stops (results/creep_diagnosis); with --study rest, the rest by force
+the lid stops (results/rest/creep_diagnosis); with --study rest, the rest by force
 balance: the unbalanced-force ratio's tolerance, contact and local damping
-against the steps to rest, the answer there and the hold (results/force_balance).
+against the steps to rest, the answer there and the hold (results/rest/force_balance).
 
 Each row runs input_scripts/in.oedometer (a copy, so that editing the scene
 cannot change a running job) on DA Cu 2.5, side 3.3 (4,188 grains), seed 1,

@@ -2,7 +2,7 @@
 # Layer-wise Cu 3.5 at the scene's defaults (Hertz quartz, 100 kPa,
 # ke_vrms 4e-4), side 5 (118,923 grains), seed 1, one rank: one job to the
 # stop against jobs of 10,000 steps that each go on from the last one's
-# checkpoint (results/resume_handover). The two runs are identical to the
+# checkpoint (results/rest/resume_handover). The two runs are identical to the
 # first checkpoint (one rank, same seed), so the block after each resume is
 # compared with the same block of the uninterrupted run. One run per core,
 # about 1.5 hours on 2 cores. Resumable: given again, each study goes on.

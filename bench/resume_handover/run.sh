@@ -1,6 +1,6 @@
 #!/bin/bash
 # A resumed job against the run without a checkpoint: how much of the lid's
-# load the hand-over to LIGGGHTS' servo keeps (results/resume_handover).
+# load the hand-over to LIGGGHTS' servo keeps (results/rest/resume_handover).
 # Cu 3.5 DA, side 3.3, the scene's defaults (Hertz quartz, 100 kPa), seed 1,
 # one rank: a job ends after 2 blocks (4,000 steps, the lid still rising),
 # and the next block (to 6,000) is run three ways from that checkpoint:

@@ -58,3 +58,27 @@ with open("results/paper/fines_contacts.csv", "w", newline="") as f:
                         "%.3f" % t["loaded_contacts_per_particle"][i],
                         "%.2f" % t["primary_percent_of_interval"][i]])
 PY
+# the stiffness number (side 5.5, DA) and the size at kappa 1963
+st() { $py tools/oedometer_study.py --ranks 1 --jobs 2 "$@"; }
+st --sides 5.5 --soils cu2.0 --rules discrete --seeds 1 2 3 --var kn=2e7 --out out/paper_kn_cu20
+st --sides 5.5 --soils cu2.5 --rules discrete --seeds 1 2 3 --var kn=2e7 --out out/paper_kn_cu25
+st --sides 5.5 --soils cu3.0 --rules discrete --seeds 1 2 3 --var kn=2e7 --out out/paper_kn_cu30
+st --sides 5.5 --soils cu3.5 --rules discrete --seeds 1 2 3 --var kn=2e7 ke_vrms=4e-4 --out out/paper_kn_cu35
+st --sides 5.5 --soils cu2.0 cu2.5 cu3.0 --rules discrete --seeds 1 --var kappa=19630 overlap_max=0.2 --out out/paper_k19630
+st --sides 5.5 --soils cu2.0 cu2.5 cu3.0 --rules discrete --seeds 1 2 3 --var $K dtfac=0.2 --out out/paper_k1963_dt02
+cp out/paper_kn_cu20/study.csv results/paper/stiffness/kn2e7_side5.5_cu2.0.csv
+cp out/paper_kn_cu25/study.csv results/paper/stiffness/kn2e7_side5.5_cu2.5_da.csv
+cp out/paper_kn_cu30/study.csv results/paper/stiffness/kn2e7_side5.5_cu3.0.csv
+cp out/paper_kn_cu35/study.csv results/paper/stiffness/kn2e7_side5.5_cu3.5_ke4e-4.csv
+cp out/paper_k19630/study.csv results/paper/stiffness/kappa19630_side5.5.csv
+cp out/paper_k1963_dt02/study.csv results/paper/stiffness/kappa1963_side5.5_dtfac0.2.csv
+st --sides 3.3 --soils cu2.0 cu2.5 --rules discrete --seeds 1 2 3 --var $K --out out/paper_s33
+st --sides 5.5 --soils cu2.0 cu2.5 cu3.0 --rules discrete --seeds 1 2 3 --var $K --out out/paper_s55
+st --sides 5.5 --soils cu3.5 --rules discrete --seeds 1 2 3 --var $K ke_vrms=4e-4 --out out/paper_s55_cu35
+st --sides 9.9 --soils cu2.0 --rules discrete --seeds 1 2 3 --var $K --out out/paper_s99
+st --sides 9.9 --soils cu2.5 --rules discrete --seeds 1 2 3 --var $K --out out/paper_s99_cu25
+cp out/paper_s33/study.csv results/paper/size/kappa1963_side3.3.csv
+cp out/paper_s55/study.csv results/paper/size/kappa1963_side5.5.csv
+cp out/paper_s55_cu35/study.csv results/paper/size/kappa1963_side5.5_cu3.5_ke4e-4.csv
+cp out/paper_s99/study.csv results/paper/size/kappa1963_side9.9.csv
+cp out/paper_s99_cu25/study.csv results/paper/size/kappa1963_side9.9_cu2.5.csv

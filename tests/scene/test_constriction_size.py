@@ -98,12 +98,11 @@ def last_thermo(text, cid):
     return out
 
 
-def local_rows(path):
-    """The rows of the last snapshot of a dump local."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.startswith("ITEM: ENTRIES"))
-    return [[float(v) for v in l.split()] for l in lines[start + 1:] if l.strip()]
+def local_radii(path, cid):
+    """The radius column of the last snapshot of a dump local of compute
+    constriction/size `cid` (by its name, tools/outputs.py)."""
+    snap = su.outputs.last_snapshot(path)
+    return snap.col(su.outputs.constriction_local_name("radius", cid))
 
 
 def run(args, chk, name, text, nprocs=None, timeout=None):
@@ -174,10 +173,10 @@ def lattice_checks(args, chk):
                   "constrictions, D_c5 %.4g finer than %.4g"
                   % (n_all, n_pf, ca[AT["dc5_number"]], D_OPEN),
                   n_all > n_pf and ca[AT["dc5_number"]] < 0.99 * D_OPEN)
-        rows = local_rows(os.path.join(args.work, name, "discs.txt"))
+        radii = local_radii(os.path.join(args.work, name, "discs.txt"), "cs")
         chk.check("the dump local (6 digits) holds entry 1 = %d discs of radius D_open/2"
-                  % n_pf, len(rows) == int(n_pf) and all(
-                      abs(r[6] - D_OPEN / 2) < 1e-5 * D_OPEN for r in rows))
+                  % n_pf, len(radii) == int(n_pf) and all(
+                      abs(r - D_OPEN / 2) < 1e-5 * D_OPEN for r in radii))
     if 1 in vectors:
         for r in (2, 4):
             if r in vectors:
@@ -215,12 +214,12 @@ def doc_examples(args, chk):
                   % (n, v["dc35_number"], v["dc50_number"], v["pores"]),
                   n > 100 and 0 < v["dc35_number"] <= v["dc50_number"]
                   and v["pores"] > n / 10)
-        with open(os.path.join(root, "csd_all.txt")) as f:
-            rows = [l for l in f if not l.startswith("#")]
-        chk.check("csd_all.txt has entry 1 = %d rows" % len(rows), len(rows) == n)
+        csd = su.outputs.read_csd(os.path.join(root, "csd_all.txt"))
+        chk.check("csd_all.txt has entry 1 = %d rows" % len(csd["diameter"]),
+                  len(csd["diameter"]) == n)
         # control_by area: D_c35 weighted by the discs' area, as computed
         # from the diameters of csd_all.txt
-        d = sorted(float(l.split()[0]) for l in rows)
+        d = sorted(float(x) for x in csd["diameter"])
         tot, cum, want = sum(x * x for x in d), 0.0, None
         for x in d:
             cum += x * x

@@ -46,14 +46,12 @@ def contact_ratios(out, ystar):
     x = np.column_stack([grains.col(c) for c in "xyz"])
     r = grains.col("radius")
     rows = []
-    with open(os.path.join(out, "final_contacts.txt")) as f:
-        lines = f.read().splitlines()
-    start = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ENTRIES")) + 1
-    for l in lines[start:]:
-        v = l.split()
-        if len(v) < 12 or int(float(v[8])) != 0:     # periodic flag column: grain pairs only
+    c = su.outputs.read_contacts(os.path.join(out, "final_contacts.txt"))
+    force = np.column_stack([c["fx"], c["fy"], c["fz"]])
+    for k in range(len(c["id1"])):
+        if c["periodic"][k] != 0:     # grain pairs only
             continue
-        a, b = pos.get(int(float(v[6]))), pos.get(int(float(v[7])))
+        a, b = pos.get(int(c["id1"][k])), pos.get(int(c["id2"][k]))
         if a is None or b is None:
             continue
         d = x[a] - x[b]
@@ -62,7 +60,7 @@ def contact_ratios(out, ystar):
         if delta <= 1e-3 * max(r[a], r[b]):
             continue
         n = d / dist
-        fn = abs(np.dot([float(v[9]), float(v[10]), float(v[11])], n))
+        fn = abs(np.dot(force[k], n))
         rstar = r[a] * r[b] / (r[a] + r[b])
         rows.append(fn / (4.0 / 3.0 * ystar * math.sqrt(rstar) * delta ** 1.5))
     return np.array(rows)

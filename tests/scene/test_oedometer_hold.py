@@ -10,9 +10,9 @@ ratio of fix quasi/static is below load_tol 0.01, then the lid is held and
 every velocity and spin zeroed every 100 steps until the ratio is below
 rest_tol 1e-3) a Cu 2.5 DA specimen at side 3.3, one rank, is a static
 packing: held another 10,000 steps (with the relaxation's zeroing, the
-hold's default) its lid stress must stay within 2 % (results/force_balance).
+hold's default) its lid stress must stay within 2 % (results/rest/force_balance).
 Held without the zeroing, or at zeta 0.6, such a specimen loses 7-42 %
-(results/creep_diagnosis). A hold that let the lid move, dropped the lid
+(results/rest/creep_diagnosis). A hold that let the lid move, dropped the lid
 contacts' tangential springs, or a ratio that called rest off balance,
 would fail it. The HOLD line must agree with hold_series.txt (first row the
 stress before, last row the stress after, one row every relax_every

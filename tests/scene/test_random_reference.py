@@ -4,7 +4,7 @@ same grains does, over the container and in its interior; the layer-wise
 one's like-size contacts lie beyond it over the container, where its graded
 bed (coarse at the floor, fines under the lid) pairs like sizes by height.
 Cu 2.0 at 0.35 packs near its densest, which leaves the draw no room to
-layer the interior (+0.03 there, results/random_reference).
+layer the interior (+0.03 there, results/packing/random_reference).
 
 bench/random_reference/run.py packs Cu 2.0 in a cube of 6 coarsest diameters (6,857 grains)
 (seed 1, porosity 0.35) with both rules, scatters the discrete specimen's
