@@ -44,8 +44,13 @@ import shutil
 import subprocess
 import sys
 import time
+import types
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import outputs  # noqa: E402  (the class column of compute primary/fabric, by name)
 
 PROG = "render_fabric.py"
+BLACK = [0.0, 0.0, 0.0]
 
 
 def fail(msg):
@@ -149,8 +154,21 @@ def start_xvfb(args):
     os.environ["DISPLAY"] = ":" + number.strip().decode()
 
 
-def main():
-    args = parse_args()
+def class_array(names):
+    """(point array, component) of the grains' class, the dump column
+    outputs.PRIMARY (c_pf[2]: 1 primary, 0 loose), found by its name:
+    dump custom/vtk writes c_pf[1] .. c_pf[3] as one array 'c_pf[1-3]' of
+    3 components; (None, None) if no array holds it."""
+    for name in names:
+        k = outputs.vtk_component(name, outputs.PRIMARY)
+        if k is not None:
+            return name, k
+    return None, None
+
+
+def find_inputs(args):
+    """(step, grains_N.vtk, contacts_N.vtp or None) of OUTDIR; fails with a
+    usage error if the folder or the step's grains are missing."""
     if not os.path.isdir(args.outdir):
         fail("%s: no such folder" % args.outdir)
     grains = numbered(args.outdir, "grains", "vtk")
@@ -162,19 +180,14 @@ def main():
     if step not in grains:
         fail("%s: no grains_%d.vtk; steps present: %s"
              % (args.outdir, step, " ".join(str(s) for s in sorted(grains))))
-    gfile, cfile = grains[step], contacts.get(step)
-    start_xvfb(args)
-    if cfile is None:
-        print("%s: no contacts_%d.vtp (contacts at steps: %s): drawing the grains only"
-              % (PROG, step, " ".join(str(s) for s in sorted(contacts)) or "none"))
+    return step, grains[step], contacts.get(step), contacts
 
-    import paraview.simple as ps
-    from paraview import servermanager as sm
-    from vtk.numpy_interface import dataset_adapter as dsa
-    import numpy as np
 
+def make_view(ps, args):
+    """A render view of the image size, white background, black labels;
+    and font(points), font sizes that follow the image size."""
     # (pvpython's programmable filter puts numpy-style max/min/sum into the
-    # builtins: the code below calls builtins.max explicitly)
+    # builtins: this script calls builtins.max explicitly)
     ps._DisableFirstRenderCameraReset()
     view = ps.CreateView("RenderView")
     view.ViewSize = list(args.size)
@@ -190,37 +203,46 @@ def main():
         view.OrientationAxesLabelColor = [0.0, 0.0, 0.0]
     view.EnableRenderOnInteraction = 0
     ps.SetActiveView(view)
-    black = [0.0, 0.0, 0.0]
     fscale = builtins.min(args.size[0] / 1600.0, args.size[1] / 1200.0) ** 0.5
 
-    def font(points):                      # font sizes follow the image size
+    def font(points):
         return int(builtins.max(8, builtins.round(points * fscale)))
+    return view, font
 
-    # ------------------------------------------------------------ grains
+
+def read_grains(pv, gfile):
+    """The grains' reader, a filter adding the class as the scalar point
+    array fabric_class (1 primary, 0 loose), and the fetched data with its
+    radius and class arrays."""
+    ps, sm, dsa, np = pv.ps, pv.sm, pv.dsa, pv.np
     reader = ps.LegacyVTKReader(FileNames=[gfile])
     reader.UpdatePipeline()
     names = reader.PointData.keys()
-    pf = next((n for n in names if n.startswith("c_pf")), None)
+    pf, k = class_array(names)
     if "radius" not in names or pf is None:
-        fail("%s: needs the point arrays radius and c_pf[1-3]; it has %s"
-             % (gfile, ", ".join(names)))
+        fail("%s: needs the point arrays radius and %s (the class of compute "
+             "primary/fabric); it has %s" % (gfile, outputs.PRIMARY, ", ".join(names)))
     gdata = dsa.WrapDataObject(sm.Fetch(reader))
     radius = np.asarray(gdata.PointData["radius"])
-    cls = np.asarray(gdata.PointData[pf])[:, 1]
-    n_prim, n_all = int(np.sum(cls > 0.5)), len(cls)
-    r_med = float(np.median(radius)) if n_all else 1.0
-
-    # the class c_pf[2] as a scalar point array fabric_class (1 primary, 0 loose):
-    # ParaView 5.11's Threshold cannot pick a component of c_pf[1-3] (it would
-    # use the first, the loaded-contact count), and the Calculator cannot name it
+    cls = np.asarray(gdata.PointData[pf])
+    cls = cls[:, k] if cls.ndim > 1 else cls
+    # the class as a scalar point array fabric_class: ParaView 5.11's
+    # Threshold cannot pick a component of c_pf[1-3] (it would use the first,
+    # the loaded-contact count), and the Calculator cannot name it
     classed = ps.ProgrammableFilter(Input=reader)
     classed.CopyArrays = 1
     classed.Script = ("c = inputs[0].PointData[%r]\n"
-                      "output.PointData.append((c[:, 1] > 0.5).astype('float64'), "
-                      "'fabric_class')\n" % pf)
+                      "c = c[:, %d] if c.ndim > 1 else c\n"
+                      "output.PointData.append((c > 0.5).astype('float64'), "
+                      "'fabric_class')\n" % (pf, k))
     classed.UpdatePipeline()
+    return classed, gdata, radius, cls
 
-    # one categorical colour map for the class
+
+def draw_grains(pv, view, font, args, classed, n_prim, n_all):
+    """The primary and the loose grains as spheres coloured by class, with
+    the class legend."""
+    ps = pv.ps
     lut = ps.GetColorTransferFunction("fabric_class")
     lut.InterpretValuesAsCategories = 1
     lut.Annotations = ["1", "primary fabric: %d grains" % n_prim,
@@ -229,52 +251,57 @@ def main():
     # colours in the order of the annotations: primary slate grey, loose sand
     # (the tubes take the force colour map)
     lut.IndexedColors = [0.42, 0.47, 0.56, 0.90, 0.76, 0.50]
-
-    def grain_set(value, scale, opacity, resolution):
-        th = ps.Threshold(Input=classed)
-        th.Scalars = ["POINTS", "fabric_class"]
-        lo, hi = value - 0.5, value + 0.5
-        if hasattr(th, "LowerThreshold"):
-            th.LowerThreshold, th.UpperThreshold = lo, hi
-            th.ThresholdMethod = "Between"
-        else:
-            th.ThresholdRange = [lo, hi]
-        gl = ps.Glyph(Input=th, GlyphType="Sphere")
-        gl.OrientationArray = ["POINTS", "No orientation array"]
-        gl.ScaleArray = ["POINTS", "radius"]
-        gl.ScaleFactor = 2.0 * scale        # the glyph sphere has radius 0.5
-        gl.GlyphMode = "All Points"
-        gl.GlyphType.ThetaResolution = resolution
-        gl.GlyphType.PhiResolution = builtins.max(6, (2 * resolution) // 3)
-        rep = ps.Show(gl, view)
-        ps.ColorBy(rep, ("POINTS", "fabric_class"))
-        rep.LookupTable = lut
-        rep.Opacity = opacity
-        rep.Specular = 0.2
-        rep.SetScalarBarVisibility(view, True)
-        return rep
-
     if n_prim:
-        grain_set(1, 1.0, args.primary_opacity, 20)
+        grain_set(ps, view, lut, classed, 1, 1.0, args.primary_opacity, 20)
     if not args.hide_loose and n_prim < n_all:
-        grain_set(0, args.loose_scale, args.loose_opacity, 12)
+        grain_set(ps, view, lut, classed, 0, args.loose_scale, args.loose_opacity, 12)
     bar = ps.GetScalarBar(lut, view)
     bar.Title = "grain class"
     bar.ComponentTitle = ""
     bar.HorizontalTitle = 1
     if hasattr(bar, "TextPosition"):
         bar.TextPosition = "Ticks left/bottom, annotations right/top"
-    bar.TitleColor = black
-    bar.LabelColor = black
+    bar.TitleColor = BLACK
+    bar.LabelColor = BLACK
     bar.TitleFontSize = font(18)
     bar.LabelFontSize = font(16)
     bar.WindowLocation = "Any Location"
     bar.Position = [0.09, 0.78]
     bar.ScalarBarLength = 0.12
 
-    # the specimen's extent: grain centres +- radius (the container's walls)
+
+def grain_set(ps, view, lut, classed, value, scale, opacity, resolution):
+    """The grains of class `value` as spheres of `scale` x their radius."""
+    th = ps.Threshold(Input=classed)
+    th.Scalars = ["POINTS", "fabric_class"]
+    lo, hi = value - 0.5, value + 0.5
+    if hasattr(th, "LowerThreshold"):
+        th.LowerThreshold, th.UpperThreshold = lo, hi
+        th.ThresholdMethod = "Between"
+    else:
+        th.ThresholdRange = [lo, hi]
+    gl = ps.Glyph(Input=th, GlyphType="Sphere")
+    gl.OrientationArray = ["POINTS", "No orientation array"]
+    gl.ScaleArray = ["POINTS", "radius"]
+    gl.ScaleFactor = 2.0 * scale        # the glyph sphere has radius 0.5
+    gl.GlyphMode = "All Points"
+    gl.GlyphType.ThetaResolution = resolution
+    gl.GlyphType.PhiResolution = builtins.max(6, (2 * resolution) // 3)
+    rep = ps.Show(gl, view)
+    ps.ColorBy(rep, ("POINTS", "fabric_class"))
+    rep.LookupTable = lut
+    rep.Opacity = opacity
+    rep.Specular = 0.2
+    rep.SetScalarBarVisibility(view, True)
+    return rep
+
+
+def draw_outline(pv, view, gdata, radius):
+    """The specimen's outline, grain centres +- radius (the container's
+    walls); returns its (lo, hi) corners."""
+    ps, np = pv.ps, pv.np
     pts = np.asarray(gdata.Points).reshape(-1, 3)
-    if n_all:
+    if len(radius):
         lo = (pts - radius[:, None]).min(axis=0)
         hi = (pts + radius[:, None]).max(axis=0)
     else:
@@ -286,78 +313,88 @@ def main():
     orep.ColorArrayName = ["POINTS", ""]
     orep.AmbientColor = orep.DiffuseColor = [0.35, 0.35, 0.35]
     orep.LineWidth = 1.5
+    return lo, hi
 
-    # ------------------------------------------------------------ contacts
-    n_contacts, fmax = 0, 0.0
-    if cfile:
-        creader = ps.XMLPolyDataReader(FileName=[cfile])
-        creader.UpdatePipeline()
-        cdata = dsa.WrapDataObject(sm.Fetch(creader))
-        n_contacts = cdata.GetNumberOfCells()
-        if n_contacts == 0 or "force" not in creader.CellData.keys():
-            print("%s: %s has no contact: drawing the grains only" % (PROG, cfile))
-            n_contacts = 0
-    if n_contacts:
-        fvec = np.asarray(cdata.CellData["force"]).reshape(-1, 3)
-        fmag_c = np.linalg.norm(fvec, axis=1)
-        fmax, fmean = float(fmag_c.max()), float(fmag_c.mean())
-        c2p = ps.CellDatatoPointData(Input=creader)
-        calc = ps.Calculator(Input=c2p)
-        calc.AttributeType = "Point Data"
-        calc.ResultArrayName = "force_magnitude"
-        calc.Function = "mag(force)"
-        src = calc
-        if args.min_force > 0:
-            thf = ps.Threshold(Input=calc)
-            thf.Scalars = ["POINTS", "force_magnitude"]
-            if hasattr(thf, "LowerThreshold"):
-                thf.LowerThreshold, thf.UpperThreshold = args.min_force * fmean, 1e300
-                thf.ThresholdMethod = "Between"
-            else:
-                thf.ThresholdRange = [args.min_force * fmean, 1e300]
-            src = ps.ExtractSurface(Input=thf)
-        tube = ps.Tube(Input=src)
-        rmax = args.tube_radius if args.tube_radius else 0.35 * r_med
-        tube.Scalars = ["POINTS", "force_magnitude"]
-        tube.VaryRadius = "By Scalar"
-        tube.Radius = rmax / 10.0                   # the weakest contact
-        tube.RadiusFactor = 10.0                    # the strongest: 10 x the weakest
-        tube.NumberofSides = 12
-        tube.Capping = 1
-        trep = ps.Show(tube, view)
-        ps.ColorBy(trep, ("POINTS", "force_magnitude"))
-        flut = ps.GetColorTransferFunction("force_magnitude")
-        for preset in ("Turbo", "Jet", "Rainbow Uniform"):
-            try:
-                if flut.ApplyPreset(preset, True):
-                    break
-            except Exception:
-                pass
-        flut.RescaleTransferFunction(0.0, fmax if fmax > 0 else 1.0)
-        if hasattr(flut, "AutomaticRescaleRangeMode"):
-            flut.AutomaticRescaleRangeMode = "Never"
-        trep.SetScalarBarVisibility(view, True)
-        fbar = ps.GetScalarBar(flut, view)
-        fbar.Title = "contact force (N)"
-        fbar.ComponentTitle = ""
-        fbar.TitleColor = black
-        fbar.LabelColor = black
-        fbar.TitleFontSize = font(18)
-        fbar.LabelFontSize = font(16)
-        fbar.RangeLabelFormat = "%-#.2g"
-        fbar.WindowLocation = "Any Location"
-        fbar.Position = [0.88, 0.10]
-        fbar.ScalarBarLength = 0.45
 
-    title = ps.Text(Text="step %d: %d grains, %d primary (%.1f %% by number), %d contacts%s"
-                    % (step, n_all, n_prim, 100.0 * n_prim / builtins.max(n_all, 1), n_contacts,
-                       ", largest force %.3g N" % fmax if n_contacts else ""))
-    tr = ps.Show(title, view)
-    tr.Color = black
-    tr.FontSize = font(20)
-    tr.WindowLocation = "Upper Center"
+def read_contacts(pv, cfile):
+    """(reader, number of contacts, their |F|) of contacts_N.vtp; no
+    contact if there is no file or it has none."""
+    if not cfile:
+        return None, 0, None
+    ps, sm, dsa, np = pv.ps, pv.sm, pv.dsa, pv.np
+    creader = ps.XMLPolyDataReader(FileName=[cfile])
+    creader.UpdatePipeline()
+    cdata = dsa.WrapDataObject(sm.Fetch(creader))
+    if cdata.GetNumberOfCells() == 0 or "force" not in creader.CellData.keys():
+        print("%s: %s has no contact: drawing the grains only" % (PROG, cfile))
+        return creader, 0, None
+    fvec = np.asarray(cdata.CellData["force"]).reshape(-1, 3)
+    return creader, cdata.GetNumberOfCells(), np.linalg.norm(fvec, axis=1)
 
-    # ------------------------------------------------------------ camera
+
+def draw_contacts(pv, view, font, args, creader, fmag, r_med):
+    """The contacts as tubes whose radius and colour grow with |F|, with the
+    force legend; returns the largest |F|."""
+    ps = pv.ps
+    fmax, fmean = float(fmag.max()), float(fmag.mean())
+    c2p = ps.CellDatatoPointData(Input=creader)
+    calc = ps.Calculator(Input=c2p)
+    calc.AttributeType = "Point Data"
+    calc.ResultArrayName = "force_magnitude"
+    calc.Function = "mag(force)"
+    src = calc
+    if args.min_force > 0:
+        thf = ps.Threshold(Input=calc)
+        thf.Scalars = ["POINTS", "force_magnitude"]
+        if hasattr(thf, "LowerThreshold"):
+            thf.LowerThreshold, thf.UpperThreshold = args.min_force * fmean, 1e300
+            thf.ThresholdMethod = "Between"
+        else:
+            thf.ThresholdRange = [args.min_force * fmean, 1e300]
+        src = ps.ExtractSurface(Input=thf)
+    tube = ps.Tube(Input=src)
+    rmax = args.tube_radius if args.tube_radius else 0.35 * r_med
+    tube.Scalars = ["POINTS", "force_magnitude"]
+    tube.VaryRadius = "By Scalar"
+    tube.Radius = rmax / 10.0                   # the weakest contact
+    tube.RadiusFactor = 10.0                    # the strongest: 10 x the weakest
+    tube.NumberofSides = 12
+    tube.Capping = 1
+    trep = ps.Show(tube, view)
+    ps.ColorBy(trep, ("POINTS", "force_magnitude"))
+    force_legend(ps, view, font, trep, fmax)
+    return fmax
+
+
+def force_legend(ps, view, font, trep, fmax):
+    """The force colour map (Turbo, else Jet, else a rainbow) and its bar."""
+    flut = ps.GetColorTransferFunction("force_magnitude")
+    for preset in ("Turbo", "Jet", "Rainbow Uniform"):
+        try:
+            if flut.ApplyPreset(preset, True):
+                break
+        except Exception:
+            pass
+    flut.RescaleTransferFunction(0.0, fmax if fmax > 0 else 1.0)
+    if hasattr(flut, "AutomaticRescaleRangeMode"):
+        flut.AutomaticRescaleRangeMode = "Never"
+    trep.SetScalarBarVisibility(view, True)
+    fbar = ps.GetScalarBar(flut, view)
+    fbar.Title = "contact force (N)"
+    fbar.ComponentTitle = ""
+    fbar.TitleColor = BLACK
+    fbar.LabelColor = BLACK
+    fbar.TitleFontSize = font(18)
+    fbar.LabelFontSize = font(16)
+    fbar.RangeLabelFormat = "%-#.2g"
+    fbar.WindowLocation = "Any Location"
+    fbar.Position = [0.88, 0.10]
+    fbar.ScalarBarLength = 0.45
+
+
+def place_camera(pv, view, args, lo, hi):
+    """A perspective view of the specimen from --view-dir, z up."""
+    np = pv.np
     centre = [float(v) for v in 0.5 * (lo + hi)]
     diag = builtins.max(float(np.linalg.norm(hi - lo)), 1e-12)
     d = np.asarray(args.view_dir, float)
@@ -369,6 +406,39 @@ def main():
     view.CameraParallelProjection = 0
     view.ResetCamera(False)
     cam.Zoom(args.zoom)
+
+
+def main():
+    args = parse_args()
+    step, gfile, cfile, contacts = find_inputs(args)
+    start_xvfb(args)
+    if cfile is None:
+        print("%s: no contacts_%d.vtp (contacts at steps: %s): drawing the grains only"
+              % (PROG, step, " ".join(str(s) for s in sorted(contacts)) or "none"))
+
+    import paraview.simple as ps
+    from paraview import servermanager as sm
+    from vtk.numpy_interface import dataset_adapter as dsa
+    import numpy as np
+    pv = types.SimpleNamespace(ps=ps, sm=sm, dsa=dsa, np=np)
+
+    view, font = make_view(ps, args)
+    classed, gdata, radius, cls = read_grains(pv, gfile)
+    n_prim, n_all = int(np.sum(cls > 0.5)), len(cls)
+    r_med = float(np.median(radius)) if n_all else 1.0
+    draw_grains(pv, view, font, args, classed, n_prim, n_all)
+    lo, hi = draw_outline(pv, view, gdata, radius)
+    creader, n_contacts, fmag = read_contacts(pv, cfile)
+    fmax = draw_contacts(pv, view, font, args, creader, fmag, r_med) if n_contacts else 0.0
+
+    title = ps.Text(Text="step %d: %d grains, %d primary (%.1f %% by number), %d contacts%s"
+                    % (step, n_all, n_prim, 100.0 * n_prim / builtins.max(n_all, 1), n_contacts,
+                       ", largest force %.3g N" % fmax if n_contacts else ""))
+    tr = ps.Show(title, view)
+    tr.Color = BLACK
+    tr.FontSize = font(20)
+    tr.WindowLocation = "Upper Center"
+    place_camera(pv, view, args, lo, hi)
 
     out = os.path.abspath(args.out)
     os.makedirs(os.path.dirname(out), exist_ok=True)
