@@ -14,11 +14,11 @@ column (processors 1 1 2) reads the same. The damping itself: the free
 sphere pushed by fix addforce with 1 N for 100 steps gains (1 - alpha)
 of the work done on it.
 
-The command page's examples (docs/fix_quasi_static.md) run as written: the
-complete scene prints what the sentence after it says, and each one-line
-fix runs in it. The kinetic damping (zero N, fix_modify ID zero N) leaves
-no kinetic energy at a step that is a multiple of N and leaves it at
-others (check_zero).
+The command page's examples (docs/fix_quasi_static.md) run as written: its
+complete scene, examples/in.quasi_static_column, prints what the page's
+sentence after its link says, and each one-line fix runs in it. The kinetic
+damping (zero N, fix_modify ID zero N) leaves no kinetic energy at a step
+that is a multiple of N and leaves it at others (check_zero).
 """
 import os
 import re
@@ -111,7 +111,8 @@ def expect_error(args, chk, what, text, patterns):
 
 
 def check_zero(args, chk, scene):
-    """Kinetic damping on the page's scene, every sphere set moving at 1 m/s
+    """Kinetic damping on the page's scene (examples/in.quasi_static_column),
+    every sphere set moving at 1 m/s
     along the walls (whose friction sets the pressed spheres spinning) and
     run 10 steps of 1e-8 s: with `zero 10` (or `zero 5`)
     the last step zeroes every velocity and spin, so the kinetic energy
@@ -146,14 +147,17 @@ def check_page(args, chk):
         text = f.read()
     section = text[text.index("## Examples"):text.index("## Description")]
     blocks = re.findall(r"```\n(.*?)```", section, re.S)
-    if not chk.check("the page has two example blocks", len(blocks) == 2,
+    if not chk.check("the page has one example block and links to "
+                     "examples/in.quasi_static_column",
+                     len(blocks) == 1 and "(../examples/in.quasi_static_column)" in section,
                      len(blocks)):
         return
-    scene = blocks[1]
+    with open(os.path.join(args.source, "examples", "in.quasi_static_column")) as f:
+        scene = f.read()
     res = su.run_launcher(args, su.write_file(
         os.path.join(args.work, "page.in"), scene))
     row = thermo_row(res.text, 0)
-    chk.check("the page's complete scene runs and prints ratio 0.148, mean "
+    chk.check("examples/in.quasi_static_column runs and prints ratio 0.148, mean "
               "resultant 66.7 N, mean contact 450 N, 3 grains",
               row is not None and len(row) == 4 and
               abs(row[0] - 0.148) < 5e-4 and abs(row[1] - 66.7) < 0.05 and
