@@ -11,10 +11,11 @@
    The whole specimen (no `fabric`) gives finer constrictions. 1, 2 and 4
    ranks print the same vector to the last digit, and the local discs
    number entry 1.
-2. The examples of docs/compute_constriction_size.md run as written (the
-   second in the lattice scene, where compute pf exists); the first prints
-   the same vector on 1, 2 and 4 ranks, the second both Wan & Fell
-   probabilities of its psd. The page's output table quotes
+2. The examples of docs/compute_constriction_size.md run as written: its
+   script, examples/in.constriction_size, prints the same vector on 1, 2
+   and 4 ranks; the page's lines for a loading scene (in the lattice scene,
+   where compute pf exists) both Wan & Fell probabilities of their psd.
+   The page's output table quotes
    constriction_outputs.h (entries by name, as every check here reads them).
 3. Bad input stops with an error (3 grains, a sphere container, an unknown
    keyword, a fabric compute of another style) and a grain hidden inside
@@ -190,8 +191,12 @@ def doc_examples(args, chk):
         t = f.read()
     sec = t[t.index("## Examples"):t.index("## Description")]
     blocks = re.findall(r"```\n(.*?)```", sec, re.S)
-    if not chk.check("the page has two examples", len(blocks) == 2):
+    if not chk.check("the page links to examples/in.constriction_size and has one "
+                     "block of lines", len(blocks) == 1
+                     and "(../examples/in.constriction_size)" in sec):
         return
+    with open(os.path.join(args.source, "examples", "in.constriction_size")) as f:
+        blocks.insert(0, f.read())
     root = os.path.join(args.work, "doc")
     os.makedirs(root, exist_ok=True)
     link = os.path.join(root, "input_scripts")
@@ -214,7 +219,7 @@ def doc_examples(args, chk):
                   % (n, v["dc35_number"], v["dc50_number"], v["pores"]),
                   n > 100 and 0 < v["dc35_number"] <= v["dc50_number"]
                   and v["pores"] > n / 10)
-        csd = su.outputs.read_csd(os.path.join(root, "csd_all.txt"))
+        csd = su.outputs.read_csd(os.path.join(root, "out", "constriction_size", "csd_all.txt"))
         chk.check("csd_all.txt has entry 1 = %d rows" % len(csd["diameter"]),
                   len(csd["diameter"]) == n)
         # control_by area: D_c35 weighted by the discs' area, as computed
@@ -225,7 +230,8 @@ def doc_examples(args, chk):
             cum += x * x
             if want is None and 100.0 * cum / tot >= 35.0:
                 want = x
-        line = [l for l in blocks[0].splitlines() if "constriction/size" in l][0]
+        line = [l for l in blocks[0].splitlines()
+                if l.startswith("compute") and "constriction/size" in l][0]
         text = (blocks[0].replace(line, line + " control_by area")
                 + thermo_vector("csd") + "run 0\n")
         res = su.run_launcher(args, su.write_file(os.path.join(root, "in.ex1_area"), text),
