@@ -11,7 +11,9 @@ on 2 ranks, cut through the column (processors 1 1 2), must classify alike.
 Every entry of the global vector and of the per-interval array is checked
 through the launcher on a scene whose answer is worked out by hand (RICH
 below), by the names of compute_primary_fabric/fabric_outputs.h; the
-command page's output tables must quote that header.
+command page's output tables must quote that header. With slices 3 the
+column's height slices report the figures worked out by hand, on 1 and 2
+ranks alike, and the classes stay those of the whole column.
 """
 import math
 import os
@@ -259,6 +261,64 @@ def check_weight(args, chk):
                   got is not None and abs(got - want) < 1e-6 * want, res.describe())
 
 
+def check_slices(args, chk):
+    """slices 3 on the column (min_contacts 2): the grains' extent, z -1e-5
+    to 5.95e-3 m, in three slices of 1.98 mm; the column's lower and upper
+    sphere alone in slices 1 and 3 (primary), its middle one and the free
+    sphere in slice 2 (one primary of two, equal masses). The two column
+    contacts, both along z, count half in each slice of their grains. The
+    classification is the whole specimen's (the same classes as without
+    slices), and 2 ranks cut through the column give the same entries."""
+    slices = su.outputs.read_table(os.path.join(args.source, su.outputs.FABRIC_HEADER),
+                                   "FABRIC_SLICE_ENTRIES")
+    first = len(su.outputs.fabric_vector(args.source)) + 2 * 9 + 1
+    n = 3 * len(slices)
+    got = {}
+    for nprocs, proc in ((None, ""), (2, "1 1 2")):
+        out = os.path.join(args.work, "slices_%d.txt" % (nprocs or 1))
+        compute = ("compute pf all primary/fabric min_contacts 2 intervals 1 slices 3\n"
+                   "fix sv all ave/time 1 1 1 %s file %s"
+                   % (" ".join("c_pf[%d]" % i for i in range(first, first + n)), out))
+        classes = run_column(args, chk, "column_slices_%d" % (nprocs or 1), compute,
+                             nprocs=nprocs, processors=proc)
+        if classes is None or not os.path.isfile(out):
+            return
+        chk.check("slices 3 on %d rank(s): the column's classes as without slices"
+                  % (nprocs or 1), classes == {1: (2, 1), 2: (2, 1), 3: (2, 1), 4: (0, 0)},
+                  classes)
+        row = [float(v) for v in su.outputs.data_rows(out)[-1][1:]]
+        got[nprocs or 1] = [{e.name: row[k * len(slices) + e.position - 1] for e in slices}
+                            for k in range(3)]
+    one = got[1]
+    a_z = 7.5 * math.sqrt(2.0 / 3.0 * (4.0 / 9 + 1.0 / 9 + 1.0 / 9))  # F = e_z e_z
+    want = [(-1e-5, 1, 25, 100, 0, 2, 0.5), (None, 2, 50, 50, 50, 1, 1.0),
+            (5.95e-3, 1, 25, 100, 0, 2, 0.5)]
+    bad = []
+    for k, (z, grains, mass, prim, loose, coord, ends) in enumerate(want):
+        s = one[k]
+        for name, value, w in (("slice_particles", s["slice_particles"], grains),
+                               ("slice_mass_percent", s["slice_mass_percent"], mass),
+                               ("slice_primary_percent", s["slice_primary_percent"], prim),
+                               ("slice_loose_percent_by_number",
+                                s["slice_loose_percent_by_number"], loose),
+                               ("slice_coordination", s["slice_coordination"], coord),
+                               ("slice_fabric_contacts", s["slice_fabric_contacts"], ends),
+                               ("slice_fabric_anisotropy", s["slice_fabric_anisotropy"], a_z),
+                               ("slice_force_anisotropy", s["slice_force_anisotropy"], 0.0)):
+            if abs(value - w) > 1e-4 * max(1.0, abs(w)):
+                bad.append("slice %d %s: %g, expected %g" % (k + 1, name, value, w))
+    if abs(one[0]["slice_bottom"] + 1e-5) > 1e-9 or abs(one[2]["slice_top"] - 5.95e-3) > 1e-9:
+        bad.append("extent %g to %g, expected -1e-5 to 5.95e-3"
+                   % (one[0]["slice_bottom"], one[2]["slice_top"]))
+    chk.check("slices 3: each slice's grains, mass, primary and loose shares, "
+              "coordination, contacts and anisotropies as worked out", not bad, "\n".join(bad))
+    if 2 in got:
+        diff = max(abs(a[k] - b[k]) / max(1.0, abs(a[k]))
+                   for a, b in zip(got[1], got[2]) for k in a)
+        chk.check("slices 3: 1 and 2 ranks (cut through the column) give the same "
+                  "entries (largest relative difference %.2g)" % diff, diff < 1e-9)
+
+
 def check_docs_quote_layout(args, chk):
     """The command page's output tables name every entry of the header, in
     its position."""
@@ -267,7 +327,10 @@ def check_docs_quote_layout(args, chk):
         doc = f.read()
     missing = []
     per = su.outputs.fabric_peratom(args.source)
-    for table, entries in (("vector", vec), ("array", cols), ("per-atom", per)):
+    slices = su.outputs.read_table(os.path.join(args.source, su.outputs.FABRIC_HEADER),
+                                   "FABRIC_SLICE_ENTRIES")
+    for table, entries in (("vector", vec), ("array", cols), ("per-atom", per),
+                           ("slices", slices)):
         for pos, name, meaning in entries:
             row = "| %d | `%s` | %s |" % (pos, name, meaning)
             if row not in doc:
@@ -339,6 +402,7 @@ def main():
     check_outputs(args, chk)
     check_weight(args, chk)
     check_docs_quote_layout(args, chk)
+    check_slices(args, chk)
 
     # prune iterate with max_iterations 1 on the dangling pair: pass 1 makes
     # A loose, a further pass finds nothing, so it converged (no warning)
