@@ -22,6 +22,7 @@ runs, each weighted by its grain count: particle-steps) and the largest and
 mean change of the primary % by mass; --csv writes a row per run and rule.
 """
 import argparse
+import csv
 import glob
 import os
 import re
@@ -105,10 +106,14 @@ def main():
         print("%-20s %6d %17.0f%% %9.2f pts (%s) %+10.2f pts"
               % (rule, len(sel), 100 * cost, abs(worst[7]), worst[1], sum(ch) / len(ch)))
     if args.csv:
-        with open(args.csv, "w") as fh:
-            fh.write("rule,run,study,grains,steps,reference_steps,primary_mass_pct,change_pts\n")
+        # csv quotes a rule whose name holds a comma ("ke x2, pf 2")
+        with open(args.csv, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["rule", "run", "study", "grains", "steps", "reference_steps",
+                        "primary_mass_pct", "change_pts"])
             for o in out:
-                fh.write("%s,%s,%s,%d,%d,%d,%.2f,%+.2f\n" % o)
+                w.writerow([o[0], o[1], o[2], "%d" % o[3], "%d" % o[4], "%d" % o[5],
+                            "%.2f" % o[6], "%+.2f" % o[7]])
 
 
 if __name__ == "__main__":

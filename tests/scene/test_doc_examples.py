@@ -3,17 +3,20 @@
 
 fix sequential/pack (docs/fix_sequential_pack.md, section Examples):
 
-1. The complete script runs from a folder that sees the repository's
-   input_scripts/, prints the fix's global vector and writes a full-precision
-   dump and a restart file; the dump holds as many atoms as f_sp[1] says.
+1. The complete script the page links to, examples/in.sequential_pack,
+   runs from a folder that sees the repository's input_scripts/, prints
+   the fix's global vector and writes a full-precision dump and a restart
+   file (in out/sequential_pack/); the dump holds as many atoms as f_sp[1]
+   says.
 2. The one-line fix (layer-wise, start centre, group soil) runs in the
    setting its sentence describes (a group soil defined before).
 3. The read_restart lines read the restart file of example 1 and do not
    pack again: the atom count stays, no packing message.
 
 compute primary/fabric (docs/compute_primary_fabric.md, section Examples):
-4. The complete scene runs as written and prints what the page says it
-   prints (the sentence after it quotes the thermo line of step 0).
+4. The complete scene the page links to, examples/in.primary_fabric_column,
+   runs as written and prints what the page says it prints (the sentence
+   after the link quotes the thermo line of step 0).
 5. The output lines (thermo_style, fix ave/time, dump) run in that scene.
 
 6. The fix page's output table quotes pack_outputs.h: the position, name
@@ -40,21 +43,25 @@ def main():
     chk = su.Checker()
     page = os.path.join(args.source, "docs", "fix_sequential_pack.md")
     blocks = examples(page)
-    chk.check("the page has three examples (found %d)" % len(blocks),
-              len(blocks) == 3)
-    if len(blocks) != 3:
+    with open(page) as f:
+        linked = "(../examples/in.sequential_pack)" in f.read()
+    chk.check("the page links to examples/in.sequential_pack and has two "
+              "examples (found %d)" % len(blocks), linked and len(blocks) == 2)
+    if len(blocks) != 2:
         chk.finish()
     root = su.fresh_dir(os.path.join(args.work, "doc_examples"))
     os.symlink(os.path.join(args.source, "input_scripts"),
                os.path.join(root, "input_scripts"))
 
     # 1. the complete script, as written
-    inp = su.write_file(os.path.join(root, "in.example1"), blocks[0] + "\n")
-    res = su.run_launcher(args, inp, cwd=root, timeout=300)
+    inp = os.path.join(args.source, "examples", "in.sequential_pack")
+    res = su.run_launcher(args, inp, log=os.path.join(root, "example1.log"),
+                          cwd=root, timeout=300)
     ok = chk.check("example 1 runs as written (%.1f s)" % res.seconds,
                    res.returncode == 0 and not res.errors(), res.describe())
     m = re.search(r"^placed (\S+), porosity (\S+)$", res.text, re.M)
-    dump = os.path.join(root, "specimen.dump")
+    out = os.path.join(root, "out", "sequential_pack")
+    dump = os.path.join(out, "specimen.dump")
     natoms = None
     if ok and os.path.isfile(dump):
         natoms = su.last_snapshot(dump).natoms
@@ -64,7 +71,7 @@ def main():
               and float(m.group(1)) == natoms
               and abs(float(m.group(2)) - 0.35) < 0.005)
     chk.check("example 1 writes its restart file",
-              os.path.isfile(os.path.join(root, "packed.restart")))
+              os.path.isfile(os.path.join(out, "packed.restart")))
 
     # 2. the one-line fix in the setting its sentence names
     d2 = su.fresh_dir(os.path.join(root, "example2"))
@@ -76,7 +83,7 @@ def main():
              "region          container block 0 0.007 0 0.007 0 0.007 units box\n"
              "group           soil region container\n"
              "neighbor        1e-4 bin\n")
-    text += blocks[1] + "\n" + su.MATERIALS
+    text += blocks[0] + "\n" + su.MATERIALS
     text += ("run             0\n"
              "variable        n2 equal count(soil)\n"
              "print           \"SOIL ${n2}\"\n")
@@ -92,8 +99,8 @@ def main():
               and "40 equal-mass intervals" in res.text, res.text[-2000:])
 
     # 3. the read_restart lines, after example 1
-    if os.path.isfile(os.path.join(root, "packed.restart")):
-        lines = blocks[2].splitlines()
+    if os.path.isfile(os.path.join(out, "packed.restart")):
+        lines = blocks[1].splitlines()
         text = "atom_modify     map array\n" + lines[0] + "\n"
         text += "newton          off\ncommunicate     single vel yes\n"
         text += "\n".join(lines[1:]) + "\n" + su.MATERIALS
@@ -129,16 +136,18 @@ def check_output_table(args, chk, page):
 def compute_examples(args, chk, root):
     page = os.path.join(args.source, "docs", "compute_primary_fabric.md")
     blocks, section = examples(page, with_text=True)
-    scene = [b for b in blocks if b.startswith("units")]
+    script = os.path.join(args.source, "examples", "in.primary_fabric_column")
+    with open(script) as f:
+        scene = [f.read()]
     outputs = [b for b in blocks if b.startswith("thermo_style")]
-    chk.check("the compute page has a complete scene and an output example",
-              len(scene) == 1 and len(outputs) == 1)
-    if len(scene) != 1 or len(outputs) != 1:
+    chk.check("the compute page links to its complete scene "
+              "(examples/in.primary_fabric_column) and has an output example",
+              "(../examples/in.primary_fabric_column)" in section and len(outputs) == 1)
+    if len(outputs) != 1:
         return
     d = su.fresh_dir(os.path.join(root, "compute"))
-    inp = su.write_file(os.path.join(d, "in.scene"), scene[0] + "\n")
-    res = su.run_launcher(args, inp, cwd=d)
-    ok = chk.check("the compute page's scene runs as written (%.1f s)"
+    res = su.run_launcher(args, script, log=os.path.join(d, "scene.log"), cwd=d)
+    ok = chk.check("examples/in.primary_fabric_column runs as written (%.1f s)"
                    % res.seconds, res.returncode == 0 and not res.errors(),
                    res.describe())
     # The page: "It prints `4 1 25 75 4 4 350`: ..."
