@@ -324,7 +324,7 @@ def plot_summary(summary, side, path, label=""):
     print(path)
 
 
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--study", nargs="+", metavar="DIR")
     ap.add_argument("--side", default="3.3")
@@ -334,65 +334,70 @@ def main():
     ap.add_argument("--matrix", nargs="*", default=[], metavar="CSV")
     ap.add_argument("--page", metavar="MD")
     ap.add_argument("--label", default="", help="names a second --matrix (files and page block)")
-    a = ap.parse_args()
-    if a.label and not a.label.replace("_", "").replace(".", "").isalnum():
-        sys.stderr.write("--label %s: letters, digits, '.' and '_' only\n" % a.label)
+    return ap.parse_args()
+
+
+def matrix_only(a, suffix):
+    """--matrix without --study: the eight models from the CSVs, the table
+    and its summary figure."""
+    got = matrix_table(a.matrix, a.label)
+    if got is None:
         return 2
-    suffix = "_" + a.label if a.label else ""
-    if a.study is None and a.matrix:
-        # only the eight models from the CSVs: the table and its summary figure
-        got = matrix_table(a.matrix, a.label)
-        if got is None:
-            return 2
-        mlines, matrix_summary, matrix_side = got
-        text = "\n".join(mlines) + "\n"
-        os.makedirs(a.out, exist_ok=True)
-        open(os.path.join(a.out, "tables_side%s%s.md" % (matrix_side, suffix)), "w").write(text)
-        if a.page:
-            fill_page(a.page, text, a.label)
-        print(text)
-        plot_summary(matrix_summary, matrix_side,
-                     os.path.join(a.out, "summary_side%s%s.png" % (matrix_side, suffix)),
-                     a.label)
-        return 0
-    if a.study is None:
-        a.study = [os.path.join(ROOT, "out", "study")]
-    rows, home = [], {}  # home: run name -> the study folder that holds it
-    for study in a.study:
+    mlines, matrix_summary, matrix_side = got
+    text = "\n".join(mlines) + "\n"
+    os.makedirs(a.out, exist_ok=True)
+    open(os.path.join(a.out, "tables_side%s%s.md" % (matrix_side, suffix)), "w").write(text)
+    if a.page:
+        fill_page(a.page, text, a.label)
+    print(text)
+    plot_summary(matrix_summary, matrix_side,
+                 os.path.join(a.out, "summary_side%s%s.png" % (matrix_side, suffix)),
+                 a.label)
+    return 0
+
+
+def read_studies(studies):
+    """(rows of every study.csv, {run name: the study folder that holds
+    it}), or None (after a message) if a run is in two studies."""
+    rows, home = [], {}
+    for study in studies:
         for r in oedometer_runs.read_rows(os.path.join(study, "study.csv")):
             if r["name"] in home:
                 sys.stderr.write("run %s is in both %s and %s; give each run once\n"
                                  % (r["name"], home[r["name"]], study))
-                return 2
+                return None
             home[r["name"]] = study
             rows.append(r)
+    return rows, home
 
-    def rundir(name):
-        return os.path.join(home[name], "runs", name)
-    ranks_rows = [r for r in rows if r["side"] == a.side]
-    # each seed once: its run on the fewest ranks (a seed run on 2 ranks only
-    # counts as that seed); its runs on more ranks go to the rank-count table
+
+def fewest_ranks(ranks_rows):
+    """Each seed once: its run on the fewest ranks (a seed run on 2 ranks
+    only counts as that seed); its runs on more ranks go to the rank-count
+    table."""
     fewest = {}
     for r in ranks_rows:
         base = r["name"].split("_ranks")[0]
         if base not in fewest or int(r.get("ranks") or 1) < int(fewest[base].get("ranks") or 1):
             fewest[base] = r
-    rows = [r for r in ranks_rows if fewest[r["name"].split("_ranks")[0]] is r]
-    if not rows:
-        sys.stderr.write("no run at side %s in %s\n"
-                         % (a.side, ", ".join(os.path.join(d, "study.csv") for d in a.study)))
-        return 2
-    os.makedirs(a.out, exist_ok=True)
-    derived = ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm", "r2_tolerant_mm"]
-    fields = [k for k in rows[0].keys() if k not in derived] + derived
-    kept_rows, kept_tables = kept_digest(a.out)
-    tables, gone, lost = {}, [], []  # tables: run name -> its interval table
+    return [r for r in ranks_rows if fewest[r["name"].split("_ranks")[0]] is r]
+
+
+DERIVED = ["loose_before_pct", "r1_mm", "r2_mm", "r1_tolerant_mm", "r2_tolerant_mm"]
+
+
+def add_derived(out, ranks_rows, rundir):
+    """Adds to each row what its run folder holds (step-0 loose count, r1,
+    r2) or, the folder gone, what an earlier report into `out` kept; returns
+    {run name: its interval table}."""
+    kept_rows, kept_tables = kept_digest(out)
+    tables, gone, lost = {}, [], []
     for r in ranks_rows:
         name = r["name"]
         if not os.path.isdir(rundir(name)):
             # the folder is gone: what an earlier report read from it, if any
             (gone if name in kept_rows else lost).append(name)
-            r.update({k: kept_rows.get(name, {}).get(k, "") for k in derived})
+            r.update({k: kept_rows.get(name, {}).get(k, "") for k in DERIVED})
             if name in kept_tables:
                 tables[name] = kept_tables[name]
             continue
@@ -408,19 +413,19 @@ def main():
                 sys.stderr.write("step in Cu split: %s left out: %s\n" % (name, e))
     if gone:
         sys.stderr.write("%d runs without their folder, read from %s (study.csv, intervals.csv): %s\n"
-                         % (len(gone), a.out, ", ".join(sorted(gone))))
+                         % (len(gone), out, ", ".join(sorted(gone))))
     if lost:
         sys.stderr.write("%d runs without their folder and not kept in %s: their step-0 count, "
                          "r1, r2 and Cu split are left out: %s\n"
-                         % (len(lost), a.out, ", ".join(sorted(lost))))
-    with open(os.path.join(a.out, "study.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
-        w.writeheader()
-        w.writerows(sorted(ranks_rows, key=lambda r: r["name"]))
-    write_intervals(os.path.join(a.out, "intervals.csv"), tables)
+                         % (len(lost), out, ", ".join(sorted(lost))))
+    return tables
 
+
+def model_tables(rows, side):
+    """The per-model table and Table 2 beside ours: (lines, {(rule, soil):
+    statistics})."""
     lines = ["Side %s coarsest diameters, each seed on the fewest MPI ranks it ran on; "
-             "mean (range) over the seeds.\n" % a.side,
+             "mean (range) over the seeds.\n" % side,
              "| model | grains | seeds (at rest) | loose % before loading | primary % by mass "
              "| loose % by number | a_c | a_n | wall s |",
              "|---|---|---|---|---|---|---|---|---|"]
@@ -452,45 +457,127 @@ def main():
             table2.append("| %s | %s | %.2f | %s | %.2f | %s | %.0f | %s |"
                           % (model, fmt(s["r1_mm"], 3), p1, fmt(s["r2_mm"], 3), p2,
                              fmt(s["oz_mass_pct"]), poz, fmt(s["oz_tolerant_mass_pct"])))
-    lines += table2
-    lines += cu_step_split(rows, tables)
+    return lines + table2, summary
+
+
+def rank_table(rows, ranks_rows):
+    """The rank-count rows: each run on more ranks beside its seed's run on
+    the fewest."""
     multi = [x for x in ranks_rows if x not in rows]
-    if multi:
-        lines += ["", "Rank count (the same model and seed on more MPI ranks):\n",
-                  "| run | ranks | primary % by mass | loose % by number | OZ % | wall s |",
-                  "|---|---|---|---|---|---|"]
-        shown = set()
-        for x in sorted(multi, key=lambda r: (r["name"].split("_ranks")[0], int(r["ranks"]))):
-            base = [y for y in rows
-                    if y["name"].split("_ranks")[0] == x["name"].split("_ranks")[0]
-                    and y["name"] not in shown]
-            shown.update(y["name"] for y in base)
-            for y in base + [x]:
-                lines.append("| %s | %s | %s | %s | %s | %s |"
-                             % (y["name"].split("_ranks")[0], y.get("ranks") or "1",
-                                y["primary_mass_pct"], y["loose_number_pct"], y["oz_mass_pct"],
-                                y["wall_s"]))
-    if a.size:
-        size_rows = {}
-        for path in a.size:
-            for x in oedometer_runs.read_rows(path):
-                if (x["rule"] == "discrete" and x["soil"] == "cu2.5"
-                        and x.get("ranks", "1") in ("", "1")):
-                    size_rows[x["name"]] = x
-        lines += ["", "Size study, Cu 2.5 DA, 1 MPI rank:\n",
-                  "| side (d_N) | grains | seeds (at rest) | primary % by mass per seed | mean | range "
-                  "| loose % by number, mean | wall s per run |",
-                  "|---|---|---|---|---|---|---|---|"]
-        for side in sorted({x["side"] for x in size_rows.values()}, key=float):
-            got = sorted((x for x in size_rows.values() if x["side"] == side),
+    if not multi:
+        return []
+    lines = ["", "Rank count (the same model and seed on more MPI ranks):\n",
+             "| run | ranks | primary % by mass | loose % by number | OZ % | wall s |",
+             "|---|---|---|---|---|---|"]
+    shown = set()
+    for x in sorted(multi, key=lambda r: (r["name"].split("_ranks")[0], int(r["ranks"]))):
+        base = [y for y in rows
+                if y["name"].split("_ranks")[0] == x["name"].split("_ranks")[0]
+                and y["name"] not in shown]
+        shown.update(y["name"] for y in base)
+        for y in base + [x]:
+            lines.append("| %s | %s | %s | %s | %s | %s |"
+                         % (y["name"].split("_ranks")[0], y.get("ranks") or "1",
+                            y["primary_mass_pct"], y["loose_number_pct"], y["oz_mass_pct"],
+                            y["wall_s"]))
+    return lines
+
+
+def size_table(paths):
+    """The size study, Cu 2.5 DA on 1 rank per side, from the CSVs."""
+    size_rows = {}
+    for path in paths:
+        for x in oedometer_runs.read_rows(path):
+            if (x["rule"] == "discrete" and x["soil"] == "cu2.5"
+                    and x.get("ranks", "1") in ("", "1")):
+                size_rows[x["name"]] = x
+    lines = ["", "Size study, Cu 2.5 DA, 1 MPI rank:\n",
+             "| side (d_N) | grains | seeds (at rest) | primary % by mass per seed | mean | range "
+             "| loose % by number, mean | wall s per run |",
+             "|---|---|---|---|---|---|---|---|"]
+    for side in sorted({x["side"] for x in size_rows.values()}, key=float):
+        got = sorted((x for x in size_rows.values() if x["side"] == side),
+                     key=lambda x: int(x["seed"]))
+        p = col(got, "primary_mass_pct")
+        lines.append("| %s | %s | %d (%d) | %s | %.1f | %.1f | %.1f | %s |"
+                     % (side, fmt(stats(col(got, "grains")), 0), len(got),
+                        sum(1 for x in got if x["at_rest"] == "yes"),
+                        ", ".join("%.1f" % v for v in p), sum(p) / len(p), max(p) - min(p),
+                        stats(col(got, "loose_number_pct"))[0],
+                        fmt(stats(col(got, "wall_s")), 0)))
+    return lines
+
+
+def draw_figures(rows, rundir, out):
+    """The paper's figures per rule by tools/plot_fabric.py, from the lowest
+    seed's run of each Cu; 0, or 2 if plot_fabric.py failed."""
+    for rule, tag in RULES:
+        dirs, labels = [], []
+        for soil in SOILS:
+            got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil),
                          key=lambda x: int(x["seed"]))
-            p = col(got, "primary_mass_pct")
-            lines.append("| %s | %s | %d (%d) | %s | %.1f | %.1f | %.1f | %s |"
-                         % (side, fmt(stats(col(got, "grains")), 0), len(got),
-                            sum(1 for x in got if x["at_rest"] == "yes"),
-                            ", ".join("%.1f" % v for v in p), sum(p) / len(p), max(p) - min(p),
-                            stats(col(got, "loose_number_pct"))[0],
-                            fmt(stats(col(got, "wall_s")), 0)))
+            if got:
+                dirs.append(rundir(got[0]["name"]))
+                labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
+        missing = [d for d in dirs if not os.path.isdir(d)]
+        if missing:
+            sys.stderr.write("the %s figures are not drawn (run folders gone: %s); those "
+                             "already in %s are kept\n" % (tag, ", ".join(missing), out))
+            continue
+        if not dirs:
+            continue
+        png = os.path.join(out, tag)
+        shutil.rmtree(png, ignore_errors=True)
+        if subprocess.call(["/usr/bin/python3", os.path.join(ROOT, "tools", "plot_fabric.py")]
+                           + dirs + ["--labels"] + labels + ["--png-dir", png]) != 0:
+            sys.stderr.write("the %s figures were not drawn (plot_fabric.py's message above)\n" % tag)
+            return 2
+    return 0
+
+
+def write_study(out, ranks_rows, fields, tables):
+    """OUT/study.csv (the rows at the side, with what was added) and
+    OUT/intervals.csv."""
+    with open(os.path.join(out, "study.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(sorted(ranks_rows, key=lambda r: r["name"]))
+    write_intervals(os.path.join(out, "intervals.csv"), tables)
+
+
+def main():
+    a = parse_args()
+    if a.label and not a.label.replace("_", "").replace(".", "").isalnum():
+        sys.stderr.write("--label %s: letters, digits, '.' and '_' only\n" % a.label)
+        return 2
+    suffix = "_" + a.label if a.label else ""
+    if a.study is None and a.matrix:
+        return matrix_only(a, suffix)
+    if a.study is None:
+        a.study = [os.path.join(ROOT, "out", "study")]
+    got = read_studies(a.study)
+    if got is None:
+        return 2
+    rows, home = got
+
+    def rundir(name):
+        return os.path.join(home[name], "runs", name)
+    ranks_rows = [r for r in rows if r["side"] == a.side]
+    rows = fewest_ranks(ranks_rows)
+    if not rows:
+        sys.stderr.write("no run at side %s in %s\n"
+                         % (a.side, ", ".join(os.path.join(d, "study.csv") for d in a.study)))
+        return 2
+    os.makedirs(a.out, exist_ok=True)
+    fields = [k for k in rows[0].keys() if k not in DERIVED] + DERIVED
+    tables = add_derived(a.out, ranks_rows, rundir)
+    write_study(a.out, ranks_rows, fields, tables)
+
+    lines, summary = model_tables(rows, a.side)
+    lines += cu_step_split(rows, tables)
+    lines += rank_table(rows, ranks_rows)
+    if a.size:
+        lines += size_table(a.size)
     matrix_summary = None
     if a.matrix:
         got = matrix_table(a.matrix, a.label)
@@ -509,29 +596,7 @@ def main():
         plot_summary(matrix_summary, matrix_side,
                      os.path.join(a.out, "summary_side%s%s.png" % (matrix_side, suffix)),
                      a.label)
-
-    for rule, tag in RULES:
-        dirs, labels = [], []
-        for soil in SOILS:
-            got = sorted((x for x in rows if x["rule"] == rule and x["soil"] == soil),
-                         key=lambda x: int(x["seed"]))
-            if got:
-                dirs.append(rundir(got[0]["name"]))
-                labels.append("%s Cu %s seed %s" % (tag, soil[2:], got[0]["seed"]))
-        missing = [d for d in dirs if not os.path.isdir(d)]
-        if missing:
-            sys.stderr.write("the %s figures are not drawn (run folders gone: %s); those "
-                             "already in %s are kept\n" % (tag, ", ".join(missing), a.out))
-            continue
-        if not dirs:
-            continue
-        png = os.path.join(a.out, tag)
-        shutil.rmtree(png, ignore_errors=True)
-        if subprocess.call(["/usr/bin/python3", os.path.join(ROOT, "tools", "plot_fabric.py")]
-                           + dirs + ["--labels"] + labels + ["--png-dir", png]) != 0:
-            sys.stderr.write("the %s figures were not drawn (plot_fabric.py's message above)\n" % tag)
-            return 2
-    return 0
+    return draw_figures(rows, rundir, a.out)
 
 
 if __name__ == "__main__":
