@@ -59,7 +59,7 @@ def name_of(rule, soil, side, seed, ranks=1):
                                       "_ranks%d" % ranks if ranks > 1 else "")
 
 
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--small", action="store_true")
     ap.add_argument("--trend", action="store_true")
@@ -72,9 +72,12 @@ def main():
     ap.add_argument("--var", nargs="*", default=[], metavar="NAME=VALUE")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out")
-    a = ap.parse_args()
-    if a.out is None:
-        a.out = os.path.join(ROOT, "out", "trend" if a.trend else "study")
+    return ap, ap.parse_args()
+
+
+def plan(ap, a):
+    """(rules, soils, sides, seeds, extra scene variables) of the chosen
+    study, narrowed by --rules/--soils/--sides/--seeds, with --var added."""
     extra = {}
     if a.small + a.trend + a.convergence > 1:
         ap.error("give one of --small, --trend, --convergence")
@@ -95,7 +98,6 @@ def main():
         if not os.path.exists(psd_path(s, ROOT)):
             ap.error("no PSD file %s" % psd_path(s))
     os.makedirs(a.out, exist_ok=True)
-    csv_path = os.path.join(a.out, "study.csv")
     for nv in a.var:
         if "=" not in nv:
             ap.error("--var %s: give NAME=VALUE" % nv)
@@ -103,37 +105,38 @@ def main():
         extra[k] = v
     if a.ranks < 1:
         ap.error("--ranks %d: must be at least 1" % a.ranks)
-    matrix = [(r, s, d, e, a.ranks) for r in rules for s in soils for d in sides for e in seeds]
-    order = [name_of(*m) for m in matrix]
-    done = {row["name"] for row in oedometer_runs.read_rows(csv_path)}
-    todo = [m for m in matrix if name_of(*m) not in done]
-    print("%d runs in the matrix, %d done, %d to run, %d at a time; rows go to %s"
-          % (len(matrix), len(matrix) - len(todo), len(todo), a.jobs, csv_path), flush=True)
-    t0 = time.time()
+    return rules, soils, sides, seeds, extra
+
+
+def runner(out, extra, ntodo, t0):
+    """The function that runs one cell (rule, soil, side, seed, ranks) of
+    the matrix and prints its line: its study.csv row, or None."""
     count = [0]
 
     def one(m):
         rule, soil, side, seed, ranks = m
         name = name_of(*m)
         row = oedometer_runs.run_scene(
-            os.path.join(a.out, "runs", name),
+            os.path.join(out, "runs", name),
             {"psd": psd_path(soil), "arrangement": rule,
              "side": side, "seed": seed, **extra}, ranks)
         count[0] += 1
         if row is None:
-            print("[%d/%d] %s FAILED (see its screen.txt)" % (count[0], len(todo), name), flush=True)
+            print("[%d/%d] %s FAILED (see its screen.txt)" % (count[0], ntodo, name), flush=True)
             return None
         row.update({"name": name, "rule": rule, "soil": soil, "side": side, "seed": seed,
                     "ranks": str(ranks)})
         print("[%d/%d, %.0f s] %-28s %8s grains  primary %6s %% by mass  loose %6s %% by number  "
-              "%s s%s" % (count[0], len(todo), time.time() - t0, name, row["grains"],
+              "%s s%s" % (count[0], ntodo, time.time() - t0, name, row["grains"],
                           row["primary_mass_pct"], row["loose_number_pct"], row["wall_s"],
                           "" if row["at_rest"] == "yes" else "  (NOT at rest: t_max)"), flush=True)
         return row
+    return one
 
-    if todo:
-        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, order)
-    rows = oedometer_runs.read_rows(csv_path)
+
+def print_summary(rows, rules, soils, sides):
+    """Per model and rank count: seeds, primary % by mass and loose % by
+    number (mean, range)."""
     print("\nrule      soil   side  ranks  seeds  primary % by mass (mean, range)  loose % by number (mean, range)")
     for r in rules:
         for s in soils:
@@ -150,6 +153,25 @@ def main():
                     print("%-9s %-6s %-5s %5s %6d  %6.1f  %5.1f-%5.1f                %6.1f  %5.1f-%5.1f"
                           % (r, s, d, n, len(got), sum(p) / len(p), min(p), max(p),
                              sum(lo) / len(lo), min(lo), max(lo)))
+
+
+def main():
+    ap, a = parse_args()
+    if a.out is None:
+        a.out = os.path.join(ROOT, "out", "trend" if a.trend else "study")
+    rules, soils, sides, seeds, extra = plan(ap, a)
+    csv_path = os.path.join(a.out, "study.csv")
+    matrix = [(r, s, d, e, a.ranks) for r in rules for s in soils for d in sides for e in seeds]
+    order = [name_of(*m) for m in matrix]
+    done = {row["name"] for row in oedometer_runs.read_rows(csv_path)}
+    todo = [m for m in matrix if name_of(*m) not in done]
+    print("%d runs in the matrix, %d done, %d to run, %d at a time; rows go to %s"
+          % (len(matrix), len(matrix) - len(todo), len(todo), a.jobs, csv_path), flush=True)
+    if todo:
+        one = runner(a.out, extra, len(todo), time.time())
+        oedometer_runs.run_all(todo, a.jobs, one, csv_path, FIELDS, order)
+    print_summary(oedometer_runs.read_rows(csv_path), rules, soils, sides)
+
 
 if __name__ == "__main__":
     main()
