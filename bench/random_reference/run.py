@@ -154,7 +154,7 @@ def write_data(path, edge, r, pos, density=2650.0):
             f.write("%d 1 %.17g %g %.17g %.17g %.17g\n" % (i + 1, 2.0 * r[i], density, *pos[i]))
 
 
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--soils", nargs="*", default=soils.SOILS[:3],
                     help="shipped soils (default the three narrowest: %s)" % " ".join(soils.SOILS[:3]))
@@ -168,7 +168,80 @@ def main():
     ap.add_argument("--packings", nargs="+", default=list(PACKINGS), choices=PACKINGS,
                     help="the packings to make and measure (default all three)")
     ap.add_argument("--launcher", default=LAUNCHER[0], help="the liggghts-fabric executable")
-    a = ap.parse_args()
+    return ap.parse_args()
+
+
+def pack_specimens(a, d, psd):
+    """The sequential specimens (the discrete one also when the random
+    packing is to be made from it) that have no dump yet."""
+    for rule in ("discrete", "layerwise"):
+        if rule not in a.packings and not (rule == "discrete" and "random" in a.packings):
+            continue
+        dump = os.path.join(d, rule + ".dump")
+        if not os.path.exists(dump):
+            liggghts("in.specimen", {"psd": psd, "side": a.side, "seed": a.seed,
+                                     "arrangement": rule, "dump": dump + ".part"},
+                     os.path.join(d, rule + ".log"))
+            os.replace(dump + ".part", dump)
+
+
+def random_packing(a, soil, d):
+    """The discrete specimen's grains scattered and compressed to --phi
+    (in.random), unless its dump exists."""
+    dump = os.path.join(d, "random.dump")
+    if "random" not in a.packings or os.path.exists(dump):
+        return
+    grains = read_dump(os.path.join(d, "discrete.dump"))[2]
+    edge0, r0, p0 = scatter(grains, 0.25, a.seed)
+    data = os.path.join(d, "scattered.data")
+    write_data(data, edge0, r0, p0)
+    edge = ((4.0 / 3.0 * np.pi * r0 ** 3).sum() / a.phi) ** (1.0 / 3.0)
+    rmin = r0.min()
+    # Hertz, E 5e6 Pa, nu 0.3, 2650 kg/m3: a tenth of the finest grain's Rayleigh time
+    g = 5e6 / (2.0 * 1.3)
+    dt = 0.1 * np.pi * rmin * np.sqrt(2650.0 / g) / (0.1631 * 0.3 + 0.8766)
+    print("%s: %d grains scattered, compressing to packing fraction %.2f (%d steps)"
+          % (soil, len(r0), a.phi, a.steps), flush=True)
+    liggghts("in.random", {"data": data, "L": "%.17g" % edge, "skin": "%.3g" % (0.25 * rmin),
+                           "dt": "%.3g" % dt, "steps": a.steps, "relax": a.steps // 3,
+                           "dump": dump + ".part"}, os.path.join(d, "random.log"))
+    os.replace(dump + ".part", dump)
+
+
+def measure_soil(a, soil, d):
+    """Measures the packings of --packings into d/assortativity.csv (the
+    other packings' rows kept) and returns all its rows."""
+    rows = []
+    table = os.path.join(d, "assortativity.csv")
+    if os.path.exists(table):
+        with open(table) as f:
+            rows = [r for r in csv.DictReader(f) if r["packing"] not in a.packings]
+    for packing in PACKINGS:
+        if packing in a.packings:
+            lo, hi, r, p = read_dump(os.path.join(d, packing + ".dump"))
+            rows += measure(soil, packing, r, p, lo, hi, periodic=(packing == "random"))
+    rows.sort(key=lambda r: PACKINGS.index(r["packing"]))
+    write_csv(table, rows)
+    return rows
+
+
+def report(soil, d, rows, t0):
+    jam = next((r for r in rows if r["packing"] == "random" and r["tol"] == "overlap"), None)
+    if jam is not None and float(jam["z_contacting"]) < 6.0:
+        print("%s: WARNING: the random packing is not jammed (%s overlapping contacts per "
+              "grain with contacts, below 6): delete %s and raise --phi"
+              % (soil, jam["z_contacting"], os.path.join(d, "random.dump")), flush=True)
+    print("%s: %.0f s" % (soil, time.time() - t0), flush=True)
+    for row in rows:
+        print("  %-10s %-8s grains %6s porosity %s contacts %6s z %5s (%5s with contacts) "
+              "no contact %5s%% assortativity %s"
+              % (row["packing"], row["tol"], row["grains"], row["porosity"], row["contacts"],
+                 row["z_mean"], row["z_contacting"], row["no_contact_pct"],
+                 row["assortativity"]), flush=True)
+
+
+def main():
+    a = parse_args()
     LAUNCHER[0] = os.path.abspath(a.launcher)
     a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
@@ -180,55 +253,9 @@ def main():
         d = os.path.join(a.out, soil)
         os.makedirs(d, exist_ok=True)
         t0 = time.time()
-        for rule in ("discrete", "layerwise"):
-            if rule not in a.packings and not (rule == "discrete" and "random" in a.packings):
-                continue
-            dump = os.path.join(d, rule + ".dump")
-            if not os.path.exists(dump):
-                liggghts("in.specimen", {"psd": psd, "side": a.side, "seed": a.seed,
-                                         "arrangement": rule, "dump": dump + ".part"},
-                         os.path.join(d, rule + ".log"))
-                os.replace(dump + ".part", dump)
-        dump = os.path.join(d, "random.dump")
-        if "random" in a.packings and not os.path.exists(dump):
-            grains = read_dump(os.path.join(d, "discrete.dump"))[2]
-            edge0, r0, p0 = scatter(grains, 0.25, a.seed)
-            data = os.path.join(d, "scattered.data")
-            write_data(data, edge0, r0, p0)
-            edge = ((4.0 / 3.0 * np.pi * r0 ** 3).sum() / a.phi) ** (1.0 / 3.0)
-            rmin = r0.min()
-            # Hertz, E 5e6 Pa, nu 0.3, 2650 kg/m3: a tenth of the finest grain's Rayleigh time
-            g = 5e6 / (2.0 * 1.3)
-            dt = 0.1 * np.pi * rmin * np.sqrt(2650.0 / g) / (0.1631 * 0.3 + 0.8766)
-            print("%s: %d grains scattered, compressing to packing fraction %.2f (%d steps)"
-                  % (soil, len(r0), a.phi, a.steps), flush=True)
-            liggghts("in.random", {"data": data, "L": "%.17g" % edge, "skin": "%.3g" % (0.25 * rmin),
-                                   "dt": "%.3g" % dt, "steps": a.steps, "relax": a.steps // 3,
-                                   "dump": dump + ".part"}, os.path.join(d, "random.log"))
-            os.replace(dump + ".part", dump)
-        rows = []
-        table = os.path.join(d, "assortativity.csv")
-        if os.path.exists(table):
-            with open(table) as f:
-                rows = [r for r in csv.DictReader(f) if r["packing"] not in a.packings]
-        for packing in PACKINGS:
-            if packing in a.packings:
-                lo, hi, r, p = read_dump(os.path.join(d, packing + ".dump"))
-                rows += measure(soil, packing, r, p, lo, hi, periodic=(packing == "random"))
-        rows.sort(key=lambda r: PACKINGS.index(r["packing"]))
-        write_csv(table, rows)
-        jam = next((r for r in rows if r["packing"] == "random" and r["tol"] == "overlap"), None)
-        if jam is not None and float(jam["z_contacting"]) < 6.0:
-            print("%s: WARNING: the random packing is not jammed (%s overlapping contacts per "
-                  "grain with contacts, below 6): delete %s and raise --phi"
-                  % (soil, jam["z_contacting"], os.path.join(d, "random.dump")), flush=True)
-        print("%s: %.0f s" % (soil, time.time() - t0), flush=True)
-        for row in rows:
-            print("  %-10s %-8s grains %6s porosity %s contacts %6s z %5s (%5s with contacts) "
-                  "no contact %5s%% assortativity %s"
-                  % (row["packing"], row["tol"], row["grains"], row["porosity"], row["contacts"],
-                     row["z_mean"], row["z_contacting"], row["no_contact_pct"],
-                     row["assortativity"]), flush=True)
+        pack_specimens(a, d, psd)
+        random_packing(a, soil, d)
+        report(soil, d, measure_soil(a, soil, d), t0)
     # the table of every soil measured in OUT so far
     rows = []
     for soil in sorted(os.listdir(a.out)):
