@@ -537,15 +537,10 @@ std::string FixSequentialPack::summary_figures(
 }
 
 std::string FixSequentialPack::profile_figures(const fabric::PackVector &v) {
-  const double porosity[] = {v.layer1_porosity, v.layer2_porosity,
-                             v.layer3_porosity, v.layer4_porosity,
-                             v.layer5_porosity, v.layer6_porosity};
-  const double diameter[] = {v.layer1_mean_diameter, v.layer2_mean_diameter,
-                             v.layer3_mean_diameter, v.layer4_mean_diameter,
-                             v.layer5_mean_diameter, v.layer6_mean_diameter};
   std::string p, d;
   for (int l = 0; l < fabric::kProfileLayers; ++l)
-    p += fmt(" %.3f", porosity[l]), d += fmt(" %.2f", diameter[l]);
+    p += fmt(" %.3f", v.profile.porosity[l]),
+        d += fmt(" %.2f", v.profile.mean_diameter[l]);
   return "  by height (" + std::to_string(fabric::kProfileLayers) +
          " equal layers, floor first, by volume): porosity" + p +
          "; mass-weighted mean diameter / d_N" + d + "\n" +

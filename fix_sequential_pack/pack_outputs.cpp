@@ -39,16 +39,9 @@ void count_contacts(const PackingMeasure& measure, const PackingResult& res,
 void measure_profile(const PackingMeasure& measure, double d_n, PackVector& v) {
   const std::vector<RegionPorosity> layers =
       measure.layer_profile(kProfileLayers, 2);
-  double* porosity[kProfileLayers] = {
-      &v.layer1_porosity, &v.layer2_porosity, &v.layer3_porosity,
-      &v.layer4_porosity, &v.layer5_porosity, &v.layer6_porosity};
-  double* diameter[kProfileLayers] = {
-      &v.layer1_mean_diameter, &v.layer2_mean_diameter,
-      &v.layer3_mean_diameter, &v.layer4_mean_diameter,
-      &v.layer5_mean_diameter, &v.layer6_mean_diameter};
   for (int l = 0; l < kProfileLayers; ++l) {
-    *porosity[l] = layers[l].porosity;
-    *diameter[l] = layers[l].mean_diameter / d_n;
+    v.profile.porosity[l] = layers[l].porosity;
+    v.profile.mean_diameter[l] = layers[l].mean_diameter / d_n;
   }
 }
 
@@ -168,6 +161,11 @@ std::vector<double> vector_values(const PackVector& v) {
 #define PACK_VALUE(position, name, meaning) values[position - 1] = v.name;
   PACK_VECTOR_ENTRIES(PACK_VALUE)
 #undef PACK_VALUE
+#define PACK_PROFILE_VALUE(position, name, meaning)                  \
+  for (int l = 0; l < kProfileLayers; ++l)                           \
+    values[profile_position(ProfileQuantity::name, l) - 1] = v.profile.name[l];
+  PACK_PROFILE_ENTRIES(PACK_PROFILE_VALUE)
+#undef PACK_PROFILE_VALUE
   return values;
 }
 

@@ -6,10 +6,15 @@
 // pack_report() (pack_outputs.cpp): PackVector gets its field from the table.
 //
 // Format (kept simple for those readers): one X(position, name, "meaning")
-// per line; positions count from 1, as f_ID[I] does.
+// per line; positions count from 1, as f_ID[I] does. The vector holds the
+// entries of PACK_VECTOR_ENTRIES, then the profile by height: for each
+// quantity of PACK_PROFILE_ENTRIES (in its order) one entry per layer of
+// kProfileLayers (specimen_measure.h), floor first, named layer<L>_<name>;
+// {layer} and {layers} in its meaning stand for L and kProfileLayers.
 #ifndef FABRIC_PACK_OUTPUTS_H
 #define FABRIC_PACK_OUTPUTS_H
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -31,34 +36,52 @@
   X(10, size_assortativity, "size assortativity (ln r) of the touching pairs; NaN without pairs") \
   X(11, radius_distance_spearman, "Spearman correlation of radius with distance from the container centre; NaN if undefined") \
   X(12, interior_size_assortativity, "size assortativity of the touching pairs in the interior; NaN without such pairs") \
-  X(13, local_cu_ratio, "mean Cu of the 27 sub-cubes (grains by centre, sub-cubes of 50 grains or more) over the specimen's Cu: 1 mixed, below 1 like sizes together; NaN without such a sub-cube") \
-  X(14, layer1_porosity, "porosity of height layer 1 of 6 (equal slabs, floor first), by volume") \
-  X(15, layer2_porosity, "porosity of height layer 2 of 6, by volume")          \
-  X(16, layer3_porosity, "porosity of height layer 3 of 6, by volume")          \
-  X(17, layer4_porosity, "porosity of height layer 4 of 6, by volume")          \
-  X(18, layer5_porosity, "porosity of height layer 5 of 6, by volume")          \
-  X(19, layer6_porosity, "porosity of height layer 6 of 6 (under the ceiling), by volume") \
-  X(20, layer1_mean_diameter, "mass-weighted mean diameter of height layer 1 of 6 over the coarsest diameter d_N, by volume; NaN if it holds no solid") \
-  X(21, layer2_mean_diameter, "the same, height layer 2")                       \
-  X(22, layer3_mean_diameter, "the same, height layer 3")                       \
-  X(23, layer4_mean_diameter, "the same, height layer 4")                       \
-  X(24, layer5_mean_diameter, "the same, height layer 5")                       \
-  X(25, layer6_mean_diameter, "the same, height layer 6")
+  X(13, local_cu_ratio, "mean Cu of the 27 sub-cubes (grains by centre, sub-cubes of 50 grains or more) over the specimen's Cu: 1 mixed, below 1 like sizes together; NaN without such a sub-cube")
+
+// The profile by height, kProfileLayers equal slabs of the container, floor
+// first: per quantity (its position among the quantities, its name, its
+// meaning), one entry per layer after those above.
+#define PACK_PROFILE_ENTRIES(X)                                                \
+  X(1, porosity, "porosity of height layer {layer} of {layers} (equal slabs, floor first), by volume") \
+  X(2, mean_diameter, "mass-weighted mean diameter of height layer {layer} of {layers} over the coarsest diameter d_N, by volume; NaN if it holds no solid")
 
 namespace fabric {
 
 enum class PackEntry { PACK_VECTOR_ENTRIES(FABRIC_OUTPUT_NAME) count };
-constexpr int kPackVectorEntries = static_cast<int>(PackEntry::count);
+enum class ProfileQuantity { PACK_PROFILE_ENTRIES(FABRIC_OUTPUT_NAME) count };
+constexpr int kPackScalarEntries = static_cast<int>(PackEntry::count);
+constexpr int kProfileQuantities = static_cast<int>(ProfileQuantity::count);
+constexpr int kPackVectorEntries =
+    kPackScalarEntries + kProfileQuantities * kProfileLayers;
 
 constexpr int kPackPositions[] = {PACK_VECTOR_ENTRIES(FABRIC_OUTPUT_POSITION)};
 static_assert(counts_from_one(kPackPositions),
               "pack_outputs.h: the positions must count 1, 2, 3 ... in order");
+constexpr int kProfilePositions[] = {PACK_PROFILE_ENTRIES(FABRIC_OUTPUT_POSITION)};
+static_assert(counts_from_one(kProfilePositions),
+              "pack_outputs.h: the profile's positions must count 1, 2, 3 ...");
 
-// The global vector's values, one field per entry of the table, by its name.
+// f_ID[I] of quantity q in height layer `layer` (from 0, the floor's):
+// counted from 1.
+constexpr int profile_position(ProfileQuantity q, int layer) {
+  return kPackScalarEntries + static_cast<int>(q) * kProfileLayers + layer + 1;
+}
+
+// The profile by height: per quantity, one value per layer, floor first.
+struct PackProfile {
+#define PACK_PROFILE_FIELD(position, name, meaning) \
+  std::array<double, kProfileLayers> name{};
+  PACK_PROFILE_ENTRIES(PACK_PROFILE_FIELD)
+#undef PACK_PROFILE_FIELD
+};
+
+// The global vector's values, one field per entry of the table, by its name,
+// and the profile.
 struct PackVector {
 #define PACK_FIELD(position, name, meaning) double name = 0.0;
   PACK_VECTOR_ENTRIES(PACK_FIELD)
 #undef PACK_FIELD
+  PackProfile profile;
 };
 
 // The global vector in the table's order: entry I at [I - 1].

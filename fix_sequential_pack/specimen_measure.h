@@ -27,7 +27,9 @@
 namespace fabric {
 
 // The layers of the profile by height that a specimen's summary reports
-// (PackingMeasure::layer_profile), floor first.
+// (PackingMeasure::layer_profile), floor first: the one number that sizes
+// fix sequential/pack's profile, its vector entries and its page's table
+// (pack_outputs.h; tools/outputs.py reads it from here).
 constexpr int kProfileLayers = 6;
 
 // Volume of the part of the sphere (c, r) inside the box: closed form when

@@ -7,7 +7,9 @@ for every tool and test:
                           FABRIC_ARRAY_COLUMNS (global array, one row per
                           size interval)
   fix sequential/pack     fix_sequential_pack/pack_outputs.h
-                          PACK_VECTOR_ENTRIES (global vector)
+                          PACK_VECTOR_ENTRIES (global vector), then
+                          PACK_PROFILE_ENTRIES per height layer
+                          (kProfileLayers, specimen_measure.h)
   compute constriction/size
                           compute_constriction_size/constriction_outputs.h
                           CONSTRICTION_VECTOR_ENTRIES (global vector)
@@ -37,6 +39,7 @@ import numpy as np
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir))
 FABRIC_HEADER = os.path.join("compute_primary_fabric", "fabric_outputs.h")
 PACK_HEADER = os.path.join("fix_sequential_pack", "pack_outputs.h")
+PACK_MEASURE_HEADER = os.path.join("fix_sequential_pack", "specimen_measure.h")
 CONSTRICTION_HEADER = os.path.join("compute_constriction_size", "constriction_outputs.h")
 REST_HEADER = os.path.join("fix_quasi_static", "rest_outputs.h")
 
@@ -89,9 +92,31 @@ def fabric_array(source=ROOT):
     return read_table(os.path.join(source, FABRIC_HEADER), "FABRIC_ARRAY_COLUMNS")
 
 
+def pack_profile_layers(source=ROOT):
+    """fix sequential/pack: the layers of its profile by height,
+    kProfileLayers of fix_sequential_pack/specimen_measure.h."""
+    path = os.path.join(source, PACK_MEASURE_HEADER)
+    with open(path, encoding="utf-8") as f:
+        found = re.search(r"constexpr int kProfileLayers = (\d+);", f.read())
+    if not found:
+        raise ValueError("%s: no kProfileLayers" % path)
+    return int(found.group(1))
+
+
 def pack_vector(source=ROOT):
-    """fix sequential/pack: the entries of the global vector."""
-    return read_table(os.path.join(source, PACK_HEADER), "PACK_VECTOR_ENTRIES")
+    """fix sequential/pack: the entries of the global vector: those of
+    PACK_VECTOR_ENTRIES, then per quantity of PACK_PROFILE_ENTRIES one
+    entry per height layer, floor first, named layer<L>_<name> (the
+    header's layout)."""
+    path = os.path.join(source, PACK_HEADER)
+    entries = read_table(path, "PACK_VECTOR_ENTRIES")
+    layers = pack_profile_layers(source)
+    for q in read_table(path, "PACK_PROFILE_ENTRIES"):
+        for layer in range(1, layers + 1):
+            entries.append(Entry(len(entries) + 1, "layer%d_%s" % (layer, q.name),
+                                 q.meaning.replace("{layer}", str(layer))
+                                 .replace("{layers}", str(layers))))
+    return entries
 
 
 def constriction_vector(source=ROOT):

@@ -48,10 +48,39 @@ TEST(PackOutputs, VectorValuesFollowTheTable) {
 #define SET_TO_POSITION(position, name, meaning) v.name = position;
   PACK_VECTOR_ENTRIES(SET_TO_POSITION)
 #undef SET_TO_POSITION
+  // the profile: quantity by quantity, each over the layers, floor first
+  int next = fabric::kPackScalarEntries + 1;
+#define SET_PROFILE(position, name, meaning) \
+  for (double& x : v.profile.name) x = next++;
+  PACK_PROFILE_ENTRIES(SET_PROFILE)
+#undef SET_PROFILE
   const std::vector<double> values = fabric::vector_values(v);
   ASSERT_EQ(values.size(), static_cast<size_t>(fabric::kPackVectorEntries));
   for (int i = 0; i < fabric::kPackVectorEntries; ++i)
     EXPECT_EQ(values[i], i + 1) << "entry " << i + 1;
+}
+
+TEST(PackOutputs, TheProfileIsSizedByKProfileLayers) {
+  // the scalar entries, then porosity and mean diameter of each of the
+  // kProfileLayers layers (6: layer1_porosity f_ID[14], layer1_mean_diameter
+  // f_ID[20], as before the profile was one array)
+  using fabric::ProfileQuantity;
+  EXPECT_EQ(fabric::kPackVectorEntries,
+            fabric::kPackScalarEntries +
+                fabric::kProfileQuantities * fabric::kProfileLayers);
+  EXPECT_EQ(fabric::profile_position(ProfileQuantity::porosity, 0),
+            fabric::kPackScalarEntries + 1);
+  EXPECT_EQ(fabric::profile_position(ProfileQuantity::mean_diameter, 0),
+            fabric::kPackScalarEntries + fabric::kProfileLayers + 1);
+  EXPECT_EQ(fabric::profile_position(ProfileQuantity::mean_diameter,
+                                     fabric::kProfileLayers - 1),
+            fabric::kPackVectorEntries);
+  PackVector v;
+  v.profile.porosity[2] = 0.4;
+  v.profile.mean_diameter.back() = 0.7;
+  const std::vector<double> values = fabric::vector_values(v);
+  EXPECT_EQ(values[fabric::kPackScalarEntries + 2], 0.4);  // layer3_porosity
+  EXPECT_EQ(values.back(), 0.7);  // the top layer's mean diameter
 }
 
 TEST(PackOutputs, PositionsTheToolsRead) {
