@@ -91,215 +91,215 @@ def memory_message_check(expected_count, nprocs):
     return check
 
 
-def cases(args, work):
-    data = su.DATA_DIR
-    ok = os.path.join(data, "psd_ok_small.txt")
-    cu = os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt")
-    fine = os.path.join(data, "psd_fine_0.1mm.txt")
-    out = []
+def case(name, psd, patterns, numbers=(), nprocs=None, check=None, names_psd=False,
+         args=None, **scene_kw):
+    """A Case running `scene(psd, args or fix_args(), **scene_kw)`; with
+    names_psd the error must name the PSD file."""
+    text = scene(psd, fix_args() if args is None else args, **scene_kw)
+    return Case(name, text, patterns, numbers, nprocs, path=psd if names_psd else None,
+                extra_check=check)
 
-    def add(name, psd, patterns, numbers=(), nprocs=None, **kw):
-        check = kw.pop("check", None)
-        path = psd if kw.pop("names_psd", False) else None
-        text = scene(psd, kw.pop("args", fix_args()), **kw)
-        out.append(Case(name, text, patterns, numbers, nprocs, path=path,
-                        extra_check=check))
 
-    # -- the PSD file
+MISSING = r"cannot open|cannot read|no such|not exist|not found"
+
+# The bad PSD files of tests/scene/data: (file, patterns, numbers).
+PSD_FILE_CASES = [
+    ("psd_bad_nonincreasing_diameter.txt", [r"diameter", r"increas|larger"], [1.0e-3]),
+    ("psd_bad_decreasing_percent.txt", [r"percent", r"decrease|below|increas"], [45, 60]),
+    ("psd_bad_percent_above_100.txt", [r"percent", r"0\s*(\.\.|-|to|and)\s*100"], [120]),
+    ("psd_bad_percent_negative.txt", [r"percent", r"0\s*(\.\.|-|to|and)\s*100"], [-5]),
+    ("psd_bad_end_not_100.txt", [r"100", r"end|last"], [90]),
+    ("psd_bad_start_not_0.txt", [r"\b0\b", r"start|first"], [10]),
+    ("psd_bad_one_point.txt", [r"(at least )?(2|two) points"], [1]),
+    ("psd_bad_zero_diameter.txt", [r"diameter", r"positive"], [0]),
+    ("psd_bad_negative_diameter.txt", [r"diameter", r"positive"], [-0.8e-3]),
+    ("psd_bad_non_numeric.txt", [r"line 5\b", r"fifty", r"number"], []),
+    ("psd_bad_three_columns.txt", [r"line 5\b", r"2 numbers|two numbers|extra|columns"], [7]),
+    ("psd_bad_one_column.txt", [r"line 5\b", r"diameter percent_passing|two numbers|2 numbers"],
+     []),
+    ("psd_bad_empty.txt", [r"(at least )?(2|two) points"], [0]),
+]
+
+
+def psd_cases(work):
+    """The PSD file: missing, a folder, and the bad files."""
     missing = os.path.join(work, "no_such_psd.txt")
-    add("missing PSD file", missing,
-        [r"cannot open|cannot read|no such|not exist|not found"],
-        names_psd=True)
-    add("missing PSD file, 2 ranks", missing,
-        [r"cannot open|cannot read|no such|not exist|not found"],
-        nprocs=2, names_psd=True)
     # root reads chmod-000 files, so the unreadable PSD is a folder
     folder = os.path.join(work, "psd_path_case")
     os.makedirs(folder, exist_ok=True)
-    add("PSD path is a folder (unreadable)", folder,
-        [r"cannot (open|read)|directory|folder|not a (regular )?file"],
-        names_psd=True)
-    for fname, patterns, numbers in [
-            ("psd_bad_nonincreasing_diameter.txt",
-             [r"diameter", r"increas|larger"], [1.0e-3]),
-            ("psd_bad_decreasing_percent.txt",
-             [r"percent", r"decrease|below|increas"], [45, 60]),
-            ("psd_bad_percent_above_100.txt",
-             [r"percent", r"0\s*(\.\.|-|to|and)\s*100"], [120]),
-            ("psd_bad_percent_negative.txt",
-             [r"percent", r"0\s*(\.\.|-|to|and)\s*100"], [-5]),
-            ("psd_bad_end_not_100.txt", [r"100", r"end|last"], [90]),
-            ("psd_bad_start_not_0.txt", [r"\b0\b", r"start|first"], [10]),
-            ("psd_bad_one_point.txt", [r"(at least )?(2|two) points"], [1]),
-            ("psd_bad_zero_diameter.txt", [r"diameter", r"positive"], [0]),
-            ("psd_bad_negative_diameter.txt", [r"diameter", r"positive"],
-             [-0.8e-3]),
-            ("psd_bad_non_numeric.txt", [r"line 5\b", r"fifty",
-                                         r"number"], []),
-            ("psd_bad_three_columns.txt", [r"line 5\b", r"2 numbers|two "
-                                           r"numbers|extra|columns"], [7]),
-            ("psd_bad_one_column.txt", [r"line 5\b", r"diameter percent"
-                                        r"_passing|two numbers|2 numbers"],
-             []),
-            ("psd_bad_empty.txt", [r"(at least )?(2|two) points"], [0])]:
-        path = os.path.join(data, fname)
-        add("PSD " + fname[4:-4].replace("_", " "), path, patterns,
-            numbers, names_psd=True)
+    out = [case("missing PSD file", missing, [MISSING], names_psd=True),
+           case("missing PSD file, 2 ranks", missing, [MISSING], nprocs=2, names_psd=True),
+           case("PSD path is a folder (unreadable)", folder,
+                [r"cannot (open|read)|directory|folder|not a (regular )?file"], names_psd=True)]
+    for fname, patterns, numbers in PSD_FILE_CASES:
+        out.append(case("PSD " + fname[4:-4].replace("_", " "), os.path.join(su.DATA_DIR, fname),
+                        patterns, numbers, names_psd=True))
+    return out
 
-    # -- porosity
+
+def porosity_cases(ok):
+    out = []
     for p in ("0", "1", "-0.1", "1.5"):
         # the value beside its keyword: "between 0 and 1" alone holds 0 and 1
-        add("porosity %s" % p, ok, [r"porosity %s " % re.escape(p),
-                                    r"between 0 and 1|\(0, ?1\)|0\s*\.\.\s*1"
-                                    r"|0 < .* < 1"],
-            [float(p)], args=fix_args(porosity=p))
-    add("porosity 1.5, 2 ranks", ok, [r"porosity", r"between 0 and 1"],
-        [1.5], nprocs=2, args=fix_args(porosity="1.5"))
-    add("porosity abc (not a number)", ok, [r"porosity", r"abc", r"number"],
-        args=fix_args(porosity="abc"))
+        out.append(case("porosity %s" % p, ok,
+                        [r"porosity %s " % re.escape(p),
+                         r"between 0 and 1|\(0, ?1\)|0\s*\.\.\s*1|0 < .* < 1"],
+                        [float(p)], args=fix_args(porosity=p)))
+    return out + [
+        case("porosity 1.5, 2 ranks", ok, [r"porosity", r"between 0 and 1"], [1.5], nprocs=2,
+             args=fix_args(porosity="1.5")),
+        case("porosity abc (not a number)", ok, [r"porosity", r"abc", r"number"],
+             args=fix_args(porosity="abc")),
+    ]
 
-    # -- the container
-    add("container thinner than the largest particle", ok,
-        [r"container|region", r"largest|coarsest|smaller"], [1.0e-3],
-        region=su.block_region("container", (0, 0, 0), (BOX, BOX, 1.0e-3)))
-    add("container holding fewer than 3 particles", ok,
-        [r"only \d+ particles|fewer|too few|at least 3"],
-        region=su.block_region("container", (0, 0, 0),
-                               (1.3e-3, 1.3e-3, 1.3e-3)),
-        args=fix_args(porosity="0.5", intervals="1"))
-    add("unknown arrangement", ok, [r"arrangement", r"foo", r"discrete",
-                                    r"layerwise"],
-        args=fix_args(arrangement="foo"))
-    add("missing region (undefined ID)", ok, [r"region", r"nope",
-                                              r"does not exist|unknown|"
-                                              r"not found|undefined"],
-        args=fix_args(region="nope"))
-    add("sphere region", ok, [r"sphere", r"block"],
-        region="region          container sphere 0.003 0.003 0.003 0.002 "
-               "units box\n")
-    add("region reaching outside the box (x hi)", ok,
-        [r"outside|beyond|exceeds", r"box"], [7e-3],
-        region=su.block_region("container", (0, 0, 0), (7e-3, BOX, BOX)))
-    add("region reaching outside the box (y lo)", ok,
-        [r"outside|beyond|exceeds", r"box"], [-1e-3],
-        region=su.block_region("container", (0, -1e-3, 0), (BOX, BOX, BOX)))
-    add("region side out", ok, [r"side"],
-        region=su.block_region("container", (0, 0, 0), (BOX, BOX, BOX),
-                               "side out"))
 
-    # -- seed, intervals, other keywords
-    for s in ("0", "-3"):
-        add("seed %s" % s, ok, [r"seed", r"positive"], [float(s)],
-            args=fix_args(seed=s))
-    add("seed 1.5 (not an integer)", ok, [r"seed", r"1\.5", r"integer"],
-        args=fix_args(seed="1.5"))
-    add("seed above 2^31-1", ok, [r"seed", r"2147483647"],
-        args=fix_args(seed="99999999999"))
-    for n in ("0", "101"):
-        add("intervals %s" % n, ok, [r"intervals", r"1\s*\.\.\s*100|"
-                                     r"between 1 and 100"], [float(n)],
-            args=fix_args(intervals=n))
-    add("intervals without a value", ok, [r"intervals", r"value"],
-        args=fix_args() + " intervals")
-    add("unknown keyword", ok, [r"colour", r"unknown|allowed|illegal"],
-        args=fix_args(colour="red"))
-    add("missing keyword seed", ok, [r"seed", r"required|missing"],
-        args=fix_args(seed=None))
-    add("missing keyword psd", ok, [r"psd", r"required|missing"],
-        args=fix_args(psd=None))
-    add("missing keyword porosity", ok, [r"porosity", r"required|missing"],
-        args=fix_args(porosity=None))
-    add("missing keyword arrangement", ok, [r"arrangement",
-                                            r"required|missing"],
-        args=fix_args(arrangement=None))
-    add("missing keyword region", ok, [r"region", r"required|missing"],
-        args=fix_args(region=None))
-    add("type 2 in a box of 1 atom type", ok, [r"type", r"\b2\b",
-                                               r"1\s*\.\.\s*1"],
-        args=fix_args(type="2"))
-    add("density -5", ok, [r"density", r"positive"], [-5],
-        args=fix_args(density="-5"))
-    add("start top", ok, [r"start", r"'top'", r"auto, floor_ceiling, floor or centre"],
-        args=fix_args(start="top"))
-    add("layering 0", ok, [r"layering", r"\b0\b", r"positive"],
-        args=fix_args(layering="0"))
-    add("layering nan", ok, [r"layering", r"nan", r"not a number"],
-        args=fix_args(layering="nan"))
-    add("fill_pores maybe", ok, [r"fill_pores", r"'maybe'", r"yes or no"],
-        args=fix_args(fill_pores="maybe"))
+def container_cases(ok):
+    box = (BOX, BOX, BOX)
+    return [
+        case("container thinner than the largest particle", ok,
+             [r"container|region", r"largest|coarsest|smaller"], [1.0e-3],
+             region=su.block_region("container", (0, 0, 0), (BOX, BOX, 1.0e-3))),
+        case("container holding fewer than 3 particles", ok,
+             [r"only \d+ particles|fewer|too few|at least 3"],
+             region=su.block_region("container", (0, 0, 0), (1.3e-3, 1.3e-3, 1.3e-3)),
+             args=fix_args(porosity="0.5", intervals="1")),
+        case("unknown arrangement", ok, [r"arrangement", r"foo", r"discrete", r"layerwise"],
+             args=fix_args(arrangement="foo")),
+        case("missing region (undefined ID)", ok,
+             [r"region", r"nope", r"does not exist|unknown|not found|undefined"],
+             args=fix_args(region="nope")),
+        case("sphere region", ok, [r"sphere", r"block"],
+             region="region          container sphere 0.003 0.003 0.003 0.002 units box\n"),
+        case("region reaching outside the box (x hi)", ok,
+             [r"outside|beyond|exceeds", r"box"], [7e-3],
+             region=su.block_region("container", (0, 0, 0), (7e-3, BOX, BOX))),
+        case("region reaching outside the box (y lo)", ok,
+             [r"outside|beyond|exceeds", r"box"], [-1e-3],
+             region=su.block_region("container", (0, -1e-3, 0), box)),
+        case("region side out", ok, [r"side"],
+             region=su.block_region("container", (0, 0, 0), box, "side out")),
+    ]
 
-    # -- atom style
-    add("atom_style atomic", ok, [r"granular|sphere|radius"],
-        atom_style="atomic")
 
-    # -- too many particles for memory (or for int32 atom IDs)
+# Bad keywords and values of the fix: (name, patterns, numbers, the fix's
+# arguments); the PSD is a good one.
+KEYWORD_CASES = [
+    ("seed 0", [r"seed", r"positive"], [0.0], fix_args(seed="0")),
+    ("seed -3", [r"seed", r"positive"], [-3.0], fix_args(seed="-3")),
+    ("seed 1.5 (not an integer)", [r"seed", r"1\.5", r"integer"], [], fix_args(seed="1.5")),
+    ("seed above 2^31-1", [r"seed", r"2147483647"], [], fix_args(seed="99999999999")),
+    ("intervals 0", [r"intervals", r"1\s*\.\.\s*100|between 1 and 100"], [0.0],
+     fix_args(intervals="0")),
+    ("intervals 101", [r"intervals", r"1\s*\.\.\s*100|between 1 and 100"], [101.0],
+     fix_args(intervals="101")),
+    ("intervals without a value", [r"intervals", r"value"], [], fix_args() + " intervals"),
+    ("unknown keyword", [r"colour", r"unknown|allowed|illegal"], [], fix_args(colour="red")),
+    ("missing keyword seed", [r"seed", r"required|missing"], [], fix_args(seed=None)),
+    ("missing keyword psd", [r"psd", r"required|missing"], [], fix_args(psd=None)),
+    ("missing keyword porosity", [r"porosity", r"required|missing"], [], fix_args(porosity=None)),
+    ("missing keyword arrangement", [r"arrangement", r"required|missing"], [],
+     fix_args(arrangement=None)),
+    ("missing keyword region", [r"region", r"required|missing"], [], fix_args(region=None)),
+    ("type 2 in a box of 1 atom type", [r"type", r"\b2\b", r"1\s*\.\.\s*1"], [],
+     fix_args(type="2")),
+    ("density -5", [r"density", r"positive"], [-5], fix_args(density="-5")),
+    ("start top", [r"start", r"'top'", r"auto, floor_ceiling, floor or centre"], [],
+     fix_args(start="top")),
+    ("layering 0", [r"layering", r"\b0\b", r"positive"], [], fix_args(layering="0")),
+    ("layering nan", [r"layering", r"nan", r"not a number"], [], fix_args(layering="nan")),
+    ("fill_pores maybe", [r"fill_pores", r"'maybe'", r"yes or no"], [],
+     fix_args(fill_pores="maybe")),
+]
+
+
+def memory_cases(fine):
+    """Too many particles for memory (or for int32 atom IDs)."""
     n_cube = fine_psd_count(1.0, 0.4)
-    add("1 m cube of 0.1 mm grains", fine, [r"particles", r"GiB"],
-        box=1.0, region=su.block_region("container", (0, 0, 0), (1, 1, 1)),
-        check=memory_message_check(n_cube, 1))
-    add("1 m cube of 0.1 mm grains, 2 ranks", fine, [r"particles", r"GiB"],
-        nprocs=2, box=1.0,
-        region=su.block_region("container", (0, 0, 0), (1, 1, 1)),
-        check=memory_message_check(n_cube, 2))
+    cube = su.block_region("container", (0, 0, 0), (1, 1, 1))
+    out = [case("1 m cube of 0.1 mm grains", fine, [r"particles", r"GiB"], box=1.0,
+                region=cube, check=memory_message_check(n_cube, 1)),
+           case("1 m cube of 0.1 mm grains, 2 ranks", fine, [r"particles", r"GiB"], nprocs=2,
+                box=1.0, region=cube, check=memory_message_check(n_cube, 2))]
     # Below the ID limit (2^31/4 particles) but above this machine's memory.
     target = 4e8
     memory = os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
     if target * 2048 > 0.8 * memory:
         edge = (target / fine_psd_count(1.0, 0.4)) ** (1 / 3)
-        add("%.3g m cube of 0.1 mm grains (4e8 particles)" % edge, fine,
-            [r"particles", r"GiB"], box=edge,
-            region=su.block_region("container", (0, 0, 0),
-                                   (edge, edge, edge)),
-            check=memory_message_check(target, 1))
+        out.append(case("%.3g m cube of 0.1 mm grains (4e8 particles)" % edge, fine,
+                        [r"particles", r"GiB"], box=edge,
+                        region=su.block_region("container", (0, 0, 0), (edge, edge, edge)),
+                        check=memory_message_check(target, 1)))
     else:
         print("       (skipped the 4e8-particle case: this machine has "
               "%.0f GiB)" % (memory / 2**30))
     return out
 
 
+def cases(args, work):
+    ok = os.path.join(su.DATA_DIR, "psd_ok_small.txt")
+    fine = os.path.join(su.DATA_DIR, "psd_fine_0.1mm.txt")
+    return (psd_cases(work) + porosity_cases(ok) + container_cases(ok)
+            + [case(name, ok, patterns, numbers, args=a)
+               for name, patterns, numbers, a in KEYWORD_CASES]
+            # the atom style
+            + [case("atom_style atomic", ok, [r"granular|sphere|radius"], atom_style="atomic")]
+            + memory_cases(fine))
+
+
+def problems_of(case, res, err, msg):
+    """What is wrong with the run of `case`: [] if it ended promptly with
+    the ERROR it should (`err` its ERROR lines, `msg` them without source
+    locations and paths)."""
+    problems = []
+    if res.timed_out:
+        problems.append("did not end within %.0f s" % TIMEOUT)
+    if res.crashed():
+        problems.append("crashed (exit code %s)" % res.returncode)
+    elif not res.timed_out and res.returncode == 0:
+        problems.append("exit code 0")
+    if not err:
+        problems.append("no 'ERROR:' line")
+        return problems
+    if case.path and case.path not in err:
+        problems.append("the error does not name the file " + case.path)
+    for pat in case.patterns:
+        if not re.search(pat, msg, re.I):
+            problems.append("the error does not match /%s/" % pat)
+    for v in case.numbers:
+        if not su.mentions_number(msg, v):
+            problems.append("the error does not name the value %g" % v)
+    if case.extra_check:
+        good, detail = case.extra_check(err)
+        if not good:
+            problems.append(detail)
+    return problems
+
+
+def run_case(args, chk, work, i, case):
+    inp = su.write_file(os.path.join(work, "case%02d.in" % i), case.text)
+    res = su.run_launcher(args, inp, nprocs=case.nprocs, timeout=TIMEOUT)
+    err = " | ".join(dict.fromkeys(res.errors()))  # each line once
+    # what the patterns and numbers see: the message without the source
+    # location and without the paths of the input files
+    msg = re.sub(r"\([^()]*\.(cpp|h):\d+\)", "", err)
+    for s in (case.path, inp, su.DATA_DIR, work, args.source):
+        if s:
+            msg = msg.replace(s, "<path>")
+    problems = problems_of(case, res, err, msg)
+    where = "" if case.nprocs is None else " [np %d]" % case.nprocs
+    chk.check("%s%s: ERROR in %.1f s" % (case.name, where, res.seconds),
+              not problems,
+              "; ".join(problems) + "\n" + (err or res.describe()))
+    if not problems:
+        chk.note(err[:300] if len(err) <= 300 else err[:297] + "...")
+
+
 def main():
     args = su.parse_args(__doc__)
     chk = su.Checker()
     work = su.fresh_dir(os.path.join(args.work, "bad_input"))
-    for i, case in enumerate(cases(args, work)):
-        inp = su.write_file(os.path.join(work, "case%02d.in" % i), case.text)
-        res = su.run_launcher(args, inp, nprocs=case.nprocs, timeout=TIMEOUT)
-        errors = res.errors()
-        err = " | ".join(dict.fromkeys(errors))  # each line once
-        # what the patterns and numbers see: the message without the source
-        # location and without the paths of the input files
-        msg = re.sub(r"\([^()]*\.(cpp|h):\d+\)", "", err)
-        for s in (case.path, inp, su.DATA_DIR, work, args.source):
-            if s:
-                msg = msg.replace(s, "<path>")
-        problems = []
-        if res.timed_out:
-            problems.append("did not end within %.0f s" % TIMEOUT)
-        if res.crashed():
-            problems.append("crashed (exit code %s)" % res.returncode)
-        elif not res.timed_out and res.returncode == 0:
-            problems.append("exit code 0")
-        if not errors:
-            problems.append("no 'ERROR:' line")
-        if errors and case.path and case.path not in err:
-            problems.append("the error does not name the file " + case.path)
-        for pat in case.patterns:
-            if errors and not re.search(pat, msg, re.I):
-                problems.append("the error does not match /%s/" % pat)
-        for v in case.numbers:
-            if errors and not su.mentions_number(msg, v):
-                problems.append("the error does not name the value %g" % v)
-        detail = ""
-        if case.extra_check and errors:
-            good, detail = case.extra_check(err)
-            if not good:
-                problems.append(detail)
-        where = "" if case.nprocs is None else " [np %d]" % case.nprocs
-        chk.check("%s%s: ERROR in %.1f s" % (case.name, where, res.seconds),
-                  not problems,
-                  "; ".join(problems) + "\n" + (err or res.describe()))
-        if not problems:
-            chk.note(err[:300] if len(err) <= 300 else err[:297] + "...")
+    for i, c in enumerate(cases(args, work)):
+        run_case(args, chk, work, i, c)
     chk.finish()
 
 
