@@ -46,7 +46,7 @@ fix nve all nve/sphere
 timestep 1e-8
 thermo_style custom step c_pf[1] c_pf[2] c_pf[3] c_pf[4] c_pf[10] c_pf[11]
 thermo_modify format float %.10g
-dump d all custom 1 {dump} id z c_pf[1] c_pf[2] c_pf[3]
+dump d all custom 1 {dump} id z {peratom}
 dump_modify d sort id
 run 0
 """
@@ -58,18 +58,55 @@ DANGLING = ("create_atoms 1 single 0.005 0 0.00099 units box\n"
             "create_atoms 1 single 0.005 0 0.00297 units box")
 
 
+# the per-atom columns of compute pf as the dump names them (c_pf[I])
+LOADED = su.outputs.peratom_name("loaded_contacts")
+PRIMARY = su.outputs.PRIMARY
+
+
+def column_text(compute, free=FREE, dump="", processors=None):
+    """COLUMN with its compute, free grains, dump and processors."""
+    peratom = " ".join(su.outputs.peratom_name(e.name) for e in su.outputs.fabric_peratom())
+    return COLUMN.format(preamble=su.preamble(processors=processors or None), compute=compute,
+                         dump=dump, free=free, peratom=peratom)
+
+
+def entry(name, source=su.outputs.ROOT):
+    """The thermo keyword of global vector entry `name`: c_pf[I]."""
+    return "c_pf[%d]" % (su.outputs.index(su.outputs.fabric_vector(source))[name] + 1)
+
+
+def thermo_values(output, fields):
+    """{field: value} of the last thermo row printed under a 'Step ...'
+    header of step and `fields` (the keywords of the scene's thermo_style,
+    in order), or None."""
+    values = None
+    lines = output.splitlines()
+    for k, l in enumerate(lines[:-1]):
+        if l.split()[:1] == ["Step"] and len(l.split()) == 1 + len(fields):
+            row = lines[k + 1].split()
+            if len(row) == 1 + len(fields):
+                values = dict(zip(fields, (float(t) for t in row[1:])))
+    return values
+
+
 def run_column(args, chk, name, compute, nprocs=None, processors="", free=FREE):
-    work = args.work
-    dump = os.path.join(work, name + ".dump")
-    inp = su.write_file(os.path.join(work, "in." + name), COLUMN.format(
-        preamble=su.preamble(processors=processors or None), compute=compute, dump=dump, free=free))
+    """Runs COLUMN; {id: (loaded contacts, class)} from its dump, by the
+    dump's column names, or None if it failed."""
+    dump = os.path.join(args.work, name + ".dump")
+    inp = su.write_file(os.path.join(args.work, "in." + name),
+                        column_text(compute, free, dump, processors))
     res = su.run_launcher(args, inp, nprocs=nprocs)
     ok = chk.check("%s runs" % name, res.returncode == 0 and os.path.isfile(dump),
                    res.describe())
     if not ok:
         return None
     s = su.last_snapshot(dump)
-    return {int(r[0]): (int(float(r[2])), int(float(r[3]))) for r in s.rows}
+    return dict(zip(s.col("id", int).tolist(),
+                    zip(s.col(LOADED, as_int).tolist(), s.col(PRIMARY, as_int).tolist())))
+
+
+def as_int(token):
+    return int(float(token))
 
 
 def expect_error(args, chk, what, text, expect):
@@ -172,6 +209,22 @@ def layout(source):
     return su.outputs.fabric_vector(source), su.outputs.fabric_array(source)
 
 
+def rich_text(args, compute, name, sets, fields):
+    """The RICH scene: COLUMN with the tilted pair and the coarse sphere,
+    `sets` after the diameters are set, thermo of `fields` at full
+    precision."""
+    text = column_text(compute, RICH_ATOMS, os.path.join(args.work, name + ".dump"))
+    text = text.replace("set atom * diameter 0.002 density 2650\n",
+                        "set atom * diameter 0.002 density 2650\n" + sets)
+    text = re.sub(r"thermo_style custom .*", "thermo_style custom step " + " ".join(fields), text)
+    text = text.replace("thermo_modify format float %.10g", "thermo_modify format float %.17g")
+    return su.write_file(os.path.join(args.work, "in." + name), text)
+
+
+def close(a, b):
+    return abs(a - b) <= 1e-6 * max(1.0, abs(b))
+
+
 def check_outputs(args, chk):
     """Every global vector entry and array element of RICH, through thermo
     output at full precision, by the names of fabric_outputs.h."""
@@ -180,37 +233,23 @@ def check_outputs(args, chk):
               "numbered 1..n in order",
               [p for p, _, _ in vec] == list(range(1, 32))
               and [p for p, _, _ in cols] == list(range(1, 9)), (vec, cols))
-    nvec = 31 + 2 * 9
-    fields = ["c_pf[%d]" % i for i in range(1, nvec + 1)]
-    fields += ["c_pf[%d][%d]" % (r, c) for r in range(1, 4) for c in range(1, 9)]
-    text = COLUMN.format(preamble=su.preamble(), free=RICH_ATOMS,
-                         compute="compute pf all primary/fabric min_contacts 2 intervals 3",
-                         dump=os.path.join(args.work, "rich.dump"))
-    text = text.replace("set atom * diameter 0.002 density 2650\n",
-                        "set atom * diameter 0.002 density 2650\n"
-                        "set atom 4*5 diameter 0.001 density 2650\n"
-                        "set atom 6 diameter 0.003 density 2650\n")
-    text = re.sub(r"thermo_style custom .*", "thermo_style custom step " + " ".join(fields), text)
-    text = text.replace("thermo_modify format float %.10g", "thermo_modify format float %.17g")
-    inp = su.write_file(os.path.join(args.work, "in.rich"), text)
+    nfixed = len(vec)
+    fields = ["c_pf[%d]" % i for i in range(1, su.outputs.fabric_vector_size(9, args.source) + 1)]
+    fields += ["c_pf[%d][%d]" % (r, c) for r in range(1, 4) for c in range(1, len(cols) + 1)]
+    inp = rich_text(args, "compute pf all primary/fabric min_contacts 2 intervals 3", "rich",
+                    "set atom 4*5 diameter 0.001 density 2650\n"
+                    "set atom 6 diameter 0.003 density 2650\n", fields)
     res = su.run_launcher(args, inp)
     if not chk.check("the hand-built scene with three intervals runs",
                      res.returncode == 0 and not res.errors(), res.describe()):
         return
-    values = None
-    lines = res.output.splitlines()
-    for k, l in enumerate(lines):
-        if l.split()[:1] == ["Step"] and len(l.split()) == 1 + len(fields):
-            values = [float(t) for t in lines[k + 1].split()[1:]]
+    values = thermo_values(res.output, fields)
     if not chk.check("thermo prints all %d values" % len(fields), values, res.describe()):
         return
     want_v, want_bins, want_rows = rich_expected()
-
-    def close(a, b):
-        return abs(a - b) <= 1e-6 * max(1.0, abs(b))
     wrong = []
     for pos, name, meaning in vec:
-        got = values[pos - 1]
+        got = values["c_pf[%d]" % pos]
         if not close(got, want_v[name]):
             wrong.append("c_pf[%d] %s (%s): %r, expected %r"
                          % (pos, name, meaning, got, want_v[name]))
@@ -218,16 +257,17 @@ def check_outputs(args, chk):
               not wrong, "\n".join(wrong))
     wrong = []
     for b, (frac, force) in enumerate(want_bins):
-        for k, want in ((31 + 2 * b, frac), (32 + 2 * b, force)):
-            if not close(values[k], want):
-                wrong.append("c_pf[%d] (bin %d): %r, expected %r"
-                             % (k + 1, b + 1, values[k], want))
+        # after the fixed entries, (fraction, mean force) per bin
+        for k, want in ((nfixed + 1 + 2 * b, frac), (nfixed + 2 + 2 * b, force)):
+            got = values["c_pf[%d]" % k]
+            if not close(got, want):
+                wrong.append("c_pf[%d] (bin %d): %r, expected %r" % (k, b + 1, got, want))
     chk.check("direction bins, entries 32-49 (fraction, mean force per bin)",
               not wrong, "\n".join(wrong))
     wrong = []
     for r, row in enumerate(want_rows):
         for pos, name, meaning in cols:
-            got = values[nvec + 8 * r + pos - 1]
+            got = values["c_pf[%d][%d]" % (r + 1, pos)]
             if not close(got, row[name]):
                 wrong.append("c_pf[%d][%d] %s: %r, expected %r"
                              % (r + 1, pos, name, got, row[name]))
@@ -239,24 +279,16 @@ def check_weight(args, chk):
     """weight mass | volume on RICH with the column ten times denser (as a
     density-scaled run makes grains): by mass the column holds 240/269 of
     the mass (d^3 x density), by volume 24/53 whatever the densities."""
+    primary = entry("primary_percent_by_mass", args.source)
     for weight, want in (("mass", 100.0 * 240 / 269), ("volume", 100.0 * 24 / 53)):
-        text = COLUMN.format(preamble=su.preamble(), free=RICH_ATOMS,
-                             compute="compute pf all primary/fabric min_contacts 2 "
-                                     "intervals 3 weight " + weight,
-                             dump=os.path.join(args.work, "weight.dump"))
-        text = text.replace("set atom * diameter 0.002 density 2650\n",
-                            "set atom * diameter 0.002 density 2650\n"
-                            "set atom 1*3 density 26500\n"
-                            "set atom 4*5 diameter 0.001 density 2650\n"
-                            "set atom 6 diameter 0.003 density 2650\n")
-        text = re.sub(r"thermo_style custom .*", "thermo_style custom step c_pf[4]", text)
-        inp = su.write_file(os.path.join(args.work, "in.weight_" + weight), text)
+        inp = rich_text(args, "compute pf all primary/fabric min_contacts 2 intervals 3 weight "
+                        + weight, "weight_" + weight,
+                        "set atom 1*3 density 26500\n"
+                        "set atom 4*5 diameter 0.001 density 2650\n"
+                        "set atom 6 diameter 0.003 density 2650\n", [primary])
         res = su.run_launcher(args, inp)
-        got = None
-        lines = res.output.splitlines()
-        for k, l in enumerate(lines):
-            if l.split()[:1] == ["Step"] and len(l.split()) == 2:
-                got = float(lines[k + 1].split()[1])
+        values = thermo_values(res.output, [primary])
+        got = values[primary] if values else None
         chk.check("weight %s: primary %% by mass %s, expected %.6f" % (weight, got, want),
                   got is not None and abs(got - want) < 1e-6 * want, res.describe())
 
@@ -340,136 +372,147 @@ def check_docs_quote_layout(args, chk):
               "\n".join(missing))
 
 
+BASE = "compute pf all primary/fabric min_contacts 2 intervals 1"
+ITERATE = "compute pf all primary/fabric min_contacts 2 prune iterate intervals 1"
+WANT = {1: (2, 1), 2: (2, 1), 3: (2, 1), 4: (0, 0)}  # id: (contacts, class)
+
+
+def dangling_iterated(got):
+    """B loose, then A loose too; the column stays primary."""
+    return (got.get(4, (0, 9))[1] == 0 and got.get(5, (0, 9))[1] == 0
+            and all(got[i][1] == 1 for i in (1, 2, 3)))
+
+
+# The column scenes: (run name, compute, nprocs, processors, free grains,
+# what the check says, what {id: (contacts, class)} must satisfy).
+COLUMN_CASES = [
+    ("column", BASE, None, "", FREE,
+     "column spheres have 2 loaded contacts and are primary; the free sphere has none and is loose",
+     lambda got: got == WANT),
+    ("column_min3", "compute pf all primary/fabric intervals 1", None, "", FREE,
+     "with min_contacts 3 (the paper's rule) all four are loose",
+     lambda got: all(c == 0 for (_, c) in got.values())),
+    ("column_2ranks", BASE, 2, "1 1 2", FREE,
+     "2 ranks cut through the column: same contacts and classes", lambda got: got == WANT),
+    ("column_iterate_2ranks", ITERATE, 2, "1 1 2", FREE,
+     "prune iterate on 2 ranks: the column stays primary (walls hold it)",
+     lambda got: got == WANT),
+    # prune once vs iterate: a dangling pair on the bottom wall (ids 4, 5).
+    ("dangling_once", BASE, None, "", DANGLING,
+     "prune once: A (wall + B) is primary, B (A only) is loose",
+     lambda got: got.get(4) == (2, 1) and got.get(5) == (1, 0)),
+    ("dangling_iterate_1", ITERATE, None, "", DANGLING,
+     "prune iterate on 1 rank(s): B loose, then A loose too; the column stays primary",
+     dangling_iterated),
+    ("dangling_iterate_2", ITERATE, 2, "1 1 2", DANGLING,
+     "prune iterate on 2 rank(s): B loose, then A loose too; the column stays primary",
+     dangling_iterated),
+    # store_every: the pair style stores contact forces on multiples of N
+    # only; evaluated on such a step (step 0) the answer is the same.
+    ("column_store_every", BASE + " store_every 10", None, "", FREE,
+     "store_every 10, evaluated at step 0: same contacts and classes", lambda got: got == WANT),
+]
+
+
+def check_columns(args, chk):
+    """The column scenes of COLUMN_CASES; then store_every evaluated off its
+    steps."""
+    for name, compute, nprocs, processors, free, what, ok in COLUMN_CASES:
+        got = run_column(args, chk, name, compute, nprocs=nprocs, processors=processors, free=free)
+        if got is not None:
+            chk.check(what, ok(got), got)
+    # ... and on another step it stops with an error instead of reading an
+    # empty contact list (the dump asks for it at step 1).
+    expect_error(args, chk, "store_every 10 evaluated at step 1",
+                 column_text(BASE + " store_every 10", FREE, os.path.join(args.work, "sev.dump"))
+                 .replace("run 0", "run 3"), "evaluated at step 1, but the pair style stores "
+                 "contact forces only on multiples of 10")
+
+
+def check_max_iterations(args, chk):
+    """prune iterate with max_iterations 1 on the dangling pair: pass 1
+    makes A loose, a further pass finds nothing, so it converged (no
+    warning) and the entry prune_passes counts the one pass; on 1 and 2
+    ranks alike."""
+    fields = [entry("loose_particles", args.source), entry("prune_passes", args.source)]
+    for nprocs, proc in ((None, ""), (2, "1 1 2")):
+        name = "dangling_max1_%s" % (nprocs or 1)
+        text = column_text(ITERATE.replace("iterate", "iterate max_iterations 1"), DANGLING,
+                           os.path.join(args.work, name + ".dump"), proc)
+        text = re.sub(r"thermo_style custom .*", "thermo_style custom step " + " ".join(fields), text)
+        res = su.run_launcher(args, su.write_file(os.path.join(args.work, "in." + name), text),
+                              nprocs=nprocs)
+        got = thermo_values(res.output, fields)
+        chk.check("prune iterate, max_iterations 1, %d rank(s): converged (no "
+                  "warning), 2 loose, 1 pass" % (nprocs or 1),
+                  res.returncode == 0 and "did not converge" not in res.text
+                  and got and got[fields[0]] == 2 and got[fields[1]] == 1,
+                  res.describe())
+
+
+# Bad input: each gives an ERROR naming the value or what is allowed.
+# (what, the compute command, what its ERROR must contain)
+BAD_COMPUTES = [
+    ("min_contacts 0", BASE.replace("min_contacts 2", "min_contacts 0"), "at least 1"),
+    ("negative threshold", BASE + " force_threshold absolute -1", "must not be negative"),
+    ("negative relative threshold", BASE + " force_threshold relative -0.1", "must not be negative"),
+    ("unknown threshold mode", BASE + " force_threshold mean 1", "absolute or relative"),
+    ("unknown prune", BASE + " prune twice", "use once or iterate"),
+    ("unknown keyword", BASE + " colour red", "unknown keyword 'colour'"),
+    ("wall fix that does not exist", BASE + " walls wb nowall", "'nowall' does not exist"),
+    ("wall fix that is not a granular wall", BASE + " walls wb nve", "not a granular wall"),
+    ("intervals that do not match the specimen", BASE.replace("intervals 1", "intervals 3"),
+     "1 distinct particle diameters but intervals 3"),
+    ("a PSD that does not match the specimen",
+     BASE.replace("intervals 1", "psd %s intervals 5" % os.path.join(su.DATA_DIR, "psd_ok_small.txt")),
+     "fit no size interval"),
+    ("intervals 0", BASE.replace("intervals 1", "intervals 0"), "1..100"),
+    ("oz_tolerance 1", BASE + " oz_tolerance 1", "oz_tolerance 1 must lie in [0, 1)"),
+    ("oz_tolerance not a number", BASE + " oz_tolerance tenth", "'tenth' is not a number"),
+    ("store_every 0", BASE + " store_every 0", "store_every 0 must lie in 1..1000000000"),
+    ("store_every not an integer", BASE + " store_every 2.5", "'2.5' is not an integer"),
+    ("unknown weight", BASE + " weight density", "use mass or volume"),
+]
+
+PAIR = "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+
+# A wall without stored contacts, a non-granular style, no pair style:
+# (what, the change to the good scene, what its ERROR must contain).
+BAD_SCENES = [
+    ("granular wall without store_force_contact_stress",
+     lambda t: t.replace("zplane 0.0 store_force_contact_stress yes", "zplane 0.0"),
+     "store_force_contact_stress yes"),
+    ("non-granular atom style (checked before the pair style)",
+     lambda t: t.replace("atom_style      granular", "atom_style      atomic")
+                .replace("set atom * diameter 0.002 density 2650", "mass * 1")
+                .replace(PAIR, "")
+                .split("fix wb")[0] + "{compute}\n".format(compute=BASE) + "run 0\n",
+     "requires atom_style granular"),
+    ("no granular pair style before the compute",
+     lambda t: t.replace(PAIR, "").replace("fix nve all nve/sphere", PAIR + "fix nve all nve/sphere"),
+     "granular pair style"),
+]
+
+
+def check_bad_input(args, chk):
+    dump = os.path.join(args.work, "bad.dump")
+    for what, compute, expect in BAD_COMPUTES:
+        expect_error(args, chk, what, column_text(compute, FREE, dump), expect)
+    for what, change, expect in BAD_SCENES:
+        expect_error(args, chk, what, change(column_text(BASE, FREE, dump)), expect)
+
+
 def main():
     args = su.parse_args(__doc__)
     su.fresh_dir(args.work)
     chk = su.Checker()
-
-    want = {1: (2, 1), 2: (2, 1), 3: (2, 1), 4: (0, 0)}  # id: (contacts, class)
-    one = run_column(args, chk, "column", "compute pf all primary/fabric min_contacts 2 intervals 1")
-    if one is not None:
-        chk.check("column spheres have 2 loaded contacts and are primary; the "
-                  "free sphere has none and is loose", one == want, one)
-    three = run_column(args, chk, "column_min3", "compute pf all primary/fabric intervals 1")
-    if three is not None:
-        chk.check("with min_contacts 3 (the paper's rule) all four are loose",
-                  all(c == 0 for (_, c) in three.values()), three)
-    two = run_column(args, chk, "column_2ranks",
-                     "compute pf all primary/fabric min_contacts 2 intervals 1",
-                     nprocs=2, processors="1 1 2")
-    if two is not None:
-        chk.check("2 ranks cut through the column: same contacts and classes",
-                  two == want, two)
-    it = run_column(args, chk, "column_iterate_2ranks",
-                    "compute pf all primary/fabric min_contacts 2 prune iterate intervals 1",
-                    nprocs=2, processors="1 1 2")
-    if it is not None:
-        chk.check("prune iterate on 2 ranks: the column stays primary (walls hold it)",
-                  it == want, it)
-
-    # prune once vs iterate: a dangling pair on the bottom wall (ids 4, 5).
-    once = run_column(args, chk, "dangling_once",
-                      "compute pf all primary/fabric min_contacts 2 intervals 1",
-                      free=DANGLING)
-    if once is not None:
-        chk.check("prune once: A (wall + B) is primary, B (A only) is loose",
-                  once.get(4) == (2, 1) and once.get(5) == (1, 0), once)
-    for nprocs, proc in ((None, ""), (2, "1 1 2")):
-        itr = run_column(args, chk, "dangling_iterate_%s" % (nprocs or 1),
-                         "compute pf all primary/fabric min_contacts 2 prune iterate intervals 1",
-                         nprocs=nprocs, processors=proc, free=DANGLING)
-        if itr is not None:
-            chk.check("prune iterate on %s rank(s): B loose, then A loose too; "
-                      "the column stays primary" % (nprocs or 1),
-                      itr.get(4, (0, 9))[1] == 0 and itr.get(5, (0, 9))[1] == 0
-                      and all(itr[i][1] == 1 for i in (1, 2, 3)), itr)
-
-    # store_every: the pair style stores contact forces on multiples of N
-    # only; evaluated on such a step (step 0) the answer is the same.
-    sev = run_column(args, chk, "column_store_every",
-                     "compute pf all primary/fabric min_contacts 2 intervals 1 store_every 10")
-    if sev is not None:
-        chk.check("store_every 10, evaluated at step 0: same contacts and classes",
-                  sev == want, sev)
-    # ... and on another step it stops with an error instead of reading an
-    # empty contact list (the dump asks for it at step 1).
-    expect_error(args, chk, "store_every 10 evaluated at step 1", COLUMN.format(
-        preamble=su.preamble(), free=FREE, dump=os.path.join(args.work, "sev.dump"),
-        compute="compute pf all primary/fabric min_contacts 2 intervals 1 store_every 10")
-        .replace("run 0", "run 3"), "evaluated at step 1, but the pair style stores "
-        "contact forces only on multiples of 10")
-
+    check_columns(args, chk)
     check_outputs(args, chk)
     check_weight(args, chk)
     check_docs_quote_layout(args, chk)
     check_slices(args, chk)
-
-    # prune iterate with max_iterations 1 on the dangling pair: pass 1 makes
-    # A loose, a further pass finds nothing, so it converged (no warning)
-    # and entry 14 counts the one pass; on 1 and 2 ranks alike.
-    for nprocs, proc in ((None, ""), (2, "1 1 2")):
-        name = "dangling_max1_%s" % (nprocs or 1)
-        work = args.work
-        text = COLUMN.format(
-            preamble=su.preamble(processors=proc or None), free=DANGLING,
-            compute="compute pf all primary/fabric min_contacts 2 prune iterate max_iterations 1 intervals 1",
-            dump=os.path.join(work, name + ".dump"))
-        text = re.sub(r"thermo_style custom .*", "thermo_style custom step c_pf[2] c_pf[14]", text)
-        res = su.run_launcher(args, su.write_file(os.path.join(work, "in." + name), text), nprocs=nprocs)
-        m = re.findall(r"^\s*0\s+(\S+)\s+(\S+)\s*$", res.output, re.M)
-        chk.check("prune iterate, max_iterations 1, %d rank(s): converged (no "
-                  "warning), 2 loose, 1 pass" % (nprocs or 1),
-                  res.returncode == 0 and "did not converge" not in res.text
-                  and m and float(m[-1][0]) == 2 and float(m[-1][1]) == 1,
-                  res.describe())
-
-    # Bad input: each gives an ERROR naming the value or what is allowed.
-    base = "compute pf all primary/fabric min_contacts 2 intervals 1"
-    cases = [
-        ("min_contacts 0", base.replace("min_contacts 2", "min_contacts 0"), "at least 1"),
-        ("negative threshold", base + " force_threshold absolute -1", "must not be negative"),
-        ("negative relative threshold", base + " force_threshold relative -0.1", "must not be negative"),
-        ("unknown threshold mode", base + " force_threshold mean 1", "absolute or relative"),
-        ("unknown prune", base + " prune twice", "use once or iterate"),
-        ("unknown keyword", base + " colour red", "unknown keyword 'colour'"),
-        ("wall fix that does not exist", base + " walls wb nowall", "'nowall' does not exist"),
-        ("wall fix that is not a granular wall", base + " walls wb nve", "not a granular wall"),
-        ("intervals that do not match the specimen", base.replace("intervals 1", "intervals 3"),
-         "1 distinct particle diameters but intervals 3"),
-        ("a PSD that does not match the specimen",
-         base.replace("intervals 1", "psd %s intervals 5" % os.path.join(su.DATA_DIR, "psd_ok_small.txt")),
-         "fit no size interval"),
-        ("intervals 0", base.replace("intervals 1", "intervals 0"), "1..100"),
-        ("oz_tolerance 1", base + " oz_tolerance 1", "oz_tolerance 1 must lie in [0, 1)"),
-        ("oz_tolerance not a number", base + " oz_tolerance tenth", "'tenth' is not a number"),
-        ("store_every 0", base + " store_every 0", "store_every 0 must lie in 1..1000000000"),
-        ("store_every not an integer", base + " store_every 2.5", "'2.5' is not an integer"),
-        ("unknown weight", base + " weight density", "use mass or volume"),
-    ]
-    dump = os.path.join(args.work, "bad.dump")
-    for what, compute, expect in cases:
-        expect_error(args, chk, what, COLUMN.format(
-            preamble=su.preamble(), compute=compute, dump=dump, free=FREE), expect)
-
-    # A wall without stored contacts, a non-granular style, no pair style.
-    variants = [
-        ("granular wall without store_force_contact_stress",
-         lambda t: t.replace("zplane 0.0 store_force_contact_stress yes", "zplane 0.0"),
-         "store_force_contact_stress yes"),
-        ("non-granular atom style (checked before the pair style)",
-         lambda t: t.replace("atom_style      granular", "atom_style      atomic")
-                    .replace("set atom * diameter 0.002 density 2650", "mass * 1")
-                    .replace("pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n", "")
-                    .split("fix wb")[0] + "{compute}\n".format(compute=base) + "run 0\n",
-         "requires atom_style granular"),
-        ("no granular pair style before the compute",
-         lambda t: t.replace("pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n", "")
-                    .replace("fix nve all nve/sphere", "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\nfix nve all nve/sphere"),
-         "granular pair style"),
-    ]
-    for what, change, expect in variants:
-        expect_error(args, chk, what, change(COLUMN.format(
-            preamble=su.preamble(), compute=base, dump=dump, free=FREE)), expect)
+    check_max_iterations(args, chk)
+    check_bad_input(args, chk)
     chk.finish()
 
 
