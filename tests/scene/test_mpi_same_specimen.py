@@ -33,93 +33,117 @@ EDGE = 5.6e-3            # container edge (m): 3.5 coarsest diameters d_N of Cu 
 FIX = "pack"
 
 
+def pack(args, root, psd, arrangement, n):
+    """Packs the specimen on `n` ranks: (the run, its dump's path)."""
+    d = su.fresh_dir(os.path.join(root, "%s_np%d" % (arrangement, n)))
+    dump = os.path.join(d, "specimen.dump")
+    inp = su.write_file(os.path.join(d, "in.pack"), su.pack_scene(
+        psd, EDGE, porosity=0.40, arrangement=arrangement, seed=7,
+        fix_id=FIX, extra_fix="verbose no",
+        processors="2 1 1" if n == 2 else None, dump=dump))
+    return su.run_launcher(args, inp, nprocs=n), dump
+
+
+def check_vector(chk, arrangement, n, snap, listed, vec):
+    """The fix's global vector (what scripts read) says the same as the
+    dump: placed = atoms, porosity = 1 - sphere volume / V; `listed` the
+    particles in the list as the fix's summary says (None: no summary)."""
+    r = snap.col("radius")
+    porosity = 1.0 - (4.0 / 3.0 * np.pi * r ** 3).sum() / EDGE ** 3
+    chk.check("%s on %d rank(s): f_%s[1..3] = placed %s, listed %s, "
+              "porosity %s (dump: %d atoms, porosity %.6f; summary "
+              "lists %s)" % (arrangement, n, FIX,
+                             vec and vec["placed"], vec and vec["listed"],
+                             vec and vec["porosity"], snap.natoms,
+                             porosity, listed),
+              vec is not None and vec["placed"] == snap.natoms
+              and listed is not None and vec["listed"] == listed
+              and abs(vec["porosity"] - porosity) < 1e-9
+              and 0.0 < vec["interior_porosity"] < 1.0
+              and 0.0 < vec["wall_layer_porosity"] < 1.0
+              and vec["seconds"] > 0.0)
+
+
+def check_split(chk, arrangement, n, snap, text):
+    """On more than one rank every rank owns atoms; on 2 ranks the cut at
+    x = L/2 goes through the specimen."""
+    nl = su.nlocal_stats(text)
+    if n > 1:
+        ave, _, least = nl if nl else (None, None, None)
+        chk.check("%s on %d ranks: every rank owns atoms (Nlocal "
+                  "ave/max/min %s)" % (arrangement, n, nl),
+                  nl is not None and least > 0   # ave is %g:
+                  and abs(ave * n - snap.natoms) <= n * max(
+                      0.5, 1e-5 * snap.natoms))
+    if n == 2:
+        x = snap.col("x")
+        left = int((x < EDGE / 2).sum())
+        chk.check("%s on 2 ranks (processors 2 1 1): the specimen "
+                  "spans both halves (%d atoms at x < L/2, %d at "
+                  "x >= L/2)" % (arrangement, left, len(x) - left),
+                  0 < left < len(x))
+
+
+def run_on_ranks(args, chk, root, psd, arrangement, n):
+    """The specimen packed on `n` ranks and its checks: (snapshot, the
+    fix's vector), or None if the run failed."""
+    res, dump = pack(args, root, psd, arrangement, n)
+    ok = chk.check("%s on %d rank(s): runs to the end (%.1f s)"
+                   % (arrangement, n, res.seconds),
+                   res.returncode == 0 and not res.errors()
+                   and os.path.isfile(dump), res.describe())
+    if not ok:
+        return None
+    snap = su.last_snapshot(dump)
+    summary = su.pack_summary(res.text)
+    listed, placed, _ = summary if summary else (None, None, None)
+    chk.check("%s on %d rank(s): every placed particle is an atom "
+              "(summary %s, dump %d atoms)"
+              % (arrangement, n, summary, snap.natoms),
+              summary is not None and placed == snap.natoms
+              and len(snap.rows) == snap.natoms)
+    vec = su.pack_vector(res.text)
+    check_vector(chk, arrangement, n, snap, listed, vec)
+    check_split(chk, arrangement, n, snap, res.text)
+    return snap, vec
+
+
+def compare_ranks(chk, arrangement, snaps, col):
+    """The specimens on 2 and 4 ranks against the one on 1: atom count, IDs
+    and per ID the same values."""
+    ref = snaps[1]
+    ref_ids = ref.by_id()
+    for n in RANKS[1:]:
+        if n not in snaps:
+            continue
+        other = snaps[n]
+        chk.check("%s: %d ranks give the same atom count as 1 (%d vs %d)"
+                  % (arrangement, n, other.natoms, ref.natoms),
+                  other.natoms == ref.natoms)
+        ids = other.by_id()
+        chk.check("%s: %d ranks give the same IDs as 1"
+                  % (arrangement, n), set(ids) == set(ref_ids),
+                  "only on 1 rank: %s; only on %d: %s" % (
+                      sorted(set(ref_ids) - set(ids))[:10], n,
+                      sorted(set(ids) - set(ref_ids))[:10]))
+        compare_per_id(chk, arrangement, n, ref, other, col)
+
+
 def main():
     args = su.parse_args(__doc__)
     chk = su.Checker()
     psd = os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt")
     root = su.fresh_dir(os.path.join(args.work, "mpi_same_specimen"))
     col = "f_" + FIX
-
     specimens = {}
-    vectors = {}
     for arrangement in ARRANGEMENTS:
-        snaps = {}
-        for n in RANKS:
-            d = su.fresh_dir(os.path.join(root, "%s_np%d" % (arrangement, n)))
-            dump = os.path.join(d, "specimen.dump")
-            inp = su.write_file(os.path.join(d, "in.pack"), su.pack_scene(
-                psd, EDGE, porosity=0.40, arrangement=arrangement, seed=7,
-                fix_id=FIX, extra_fix="verbose no",
-                processors="2 1 1" if n == 2 else None, dump=dump))
-            res = su.run_launcher(args, inp, nprocs=n)
-            ok = chk.check("%s on %d rank(s): runs to the end (%.1f s)"
-                           % (arrangement, n, res.seconds),
-                           res.returncode == 0 and not res.errors()
-                           and os.path.isfile(dump), res.describe())
-            if not ok:
-                continue
-            snap = su.last_snapshot(dump)
-            snaps[n] = snap
-            summary = su.pack_summary(res.text)
-            chk.check("%s on %d rank(s): every placed particle is an atom "
-                      "(summary %s, dump %d atoms)"
-                      % (arrangement, n, summary, snap.natoms),
-                      summary is not None and summary[1] == snap.natoms
-                      and len(snap.rows) == snap.natoms)
-            # The fix's global vector (what scripts read) says the same as
-            # the dump: placed = atoms, porosity = 1 - sphere volume / V.
-            vec = su.pack_vector(res.text)
-            if n == 1:
-                vectors[arrangement] = vec
-            r = snap.col("radius")
-            porosity = 1.0 - (4.0 / 3.0 * np.pi * r ** 3).sum() / EDGE ** 3
-            chk.check("%s on %d rank(s): f_%s[1..3] = placed %s, listed %s, "
-                      "porosity %s (dump: %d atoms, porosity %.6f; summary "
-                      "lists %s)" % (arrangement, n, FIX,
-                                     vec and vec["placed"], vec and vec["listed"],
-                                     vec and vec["porosity"], snap.natoms,
-                                     porosity, summary and summary[0]),
-                      vec is not None and vec["placed"] == snap.natoms
-                      and summary is not None and vec["listed"] == summary[0]
-                      and abs(vec["porosity"] - porosity) < 1e-9
-                      and 0.0 < vec["interior_porosity"] < 1.0
-                      and 0.0 < vec["wall_layer_porosity"] < 1.0
-                      and vec["seconds"] > 0.0)
-            nl = su.nlocal_stats(res.text)
-            if n > 1:
-                chk.check("%s on %d ranks: every rank owns atoms (Nlocal "
-                          "ave/max/min %s)" % (arrangement, n, nl),
-                          nl is not None and nl[2] > 0   # ave is %g:
-                          and abs(nl[0] * n - snap.natoms) <= n * max(
-                              0.5, 1e-5 * snap.natoms))
-            if n == 2:
-                x = snap.col("x")
-                left = int((x < EDGE / 2).sum())
-                chk.check("%s on 2 ranks (processors 2 1 1): the specimen "
-                          "spans both halves (%d atoms at x < L/2, %d at "
-                          "x >= L/2)" % (arrangement, left, len(x) - left),
-                          0 < left < len(x))
-
+        runs = {n: run_on_ranks(args, chk, root, psd, arrangement, n) for n in RANKS}
+        snaps = {n: got[0] for n, got in runs.items() if got is not None}
         if 1 not in snaps:
             continue
-        ref = snaps[1]
-        specimens[arrangement] = ref
-        check_specimen(chk, arrangement, ref, col, vectors.get(arrangement))
-        ref_ids = ref.by_id()
-        for n in RANKS[1:]:
-            if n not in snaps:
-                continue
-            other = snaps[n]
-            chk.check("%s: %d ranks give the same atom count as 1 (%d vs %d)"
-                      % (arrangement, n, other.natoms, ref.natoms),
-                      other.natoms == ref.natoms)
-            ids = other.by_id()
-            chk.check("%s: %d ranks give the same IDs as 1"
-                      % (arrangement, n), set(ids) == set(ref_ids),
-                      "only on 1 rank: %s; only on %d: %s" % (
-                          sorted(set(ref_ids) - set(ids))[:10], n,
-                          sorted(set(ids) - set(ref_ids))[:10]))
-            compare_per_id(chk, arrangement, n, ref, other, col)
+        specimens[arrangement] = snaps[1]
+        check_specimen(chk, arrangement, snaps[1], col, runs[1][1])
+        compare_ranks(chk, arrangement, snaps, col)
 
     if len(specimens) == 2:
         a, b = (specimens[k] for k in ARRANGEMENTS)
