@@ -29,15 +29,20 @@ primary share of their mass. In a layered specimen the fines should carry
 load where they form a layer of their own (docs/validation.md). --csv FILE
 writes the rows of every argument to one CSV.
 
-A run folder with final_contacts.txt (the particle contacts of
-in.oedometer's last state) also gives each slice's anisotropies of Figs.
-15-16, a_c of the contact normals and a_n of the normal forces, by the
-definitions of compute primary/fabric (its entries 27-28): the contacts
-whose midpoint lies in the slice and whose normal force exceeds 1e-3 of
-the mean (the compute's default threshold; its mean also holds the wall
-contacts, which the file lacks). One tensor over a layered specimen mixes
-the fines' many contacts with the coarse grains' large forces; the slices
-show each layer's own.
+Each slice's anisotropies of Figs. 15-16, a_c of the contact normals and
+a_n of the normal forces, are compute primary/fabric's own: with the
+keyword `slices N` it reports its figures per height slice, the same N
+equal slices of the grains' extent, each grain in the slice of its centre
+(its loaded contacts enter the slice's tensors, half a contact per end),
+and the classification the whole specimen's. They are read from the run's
+fabric_global.txt (the compute's global vector, by the names of
+compute_primary_fabric/fabric_outputs.h through tools/outputs.py); a run
+whose compute had no `slices N` (N as asked) gives none ("-", an empty CSV
+field, and a note). Where the compute's slices are there, the grains, mass
+and primary shares of each slice are the compute's too (the dump's must
+agree); the mean diameter and the fines are the dump's. One tensor over a
+layered specimen mixes the fines' many contacts with the coarse grains'
+large forces; the slices show each layer's own.
 """
 import argparse
 import os
@@ -115,40 +120,33 @@ def layers(cols):
     return out, top
 
 
-def contact_dyads(path, cols):
-    """(height of each loaded contact's midpoint in d_N from the floor, unit
-    normal, normal force) from a final_contacts.txt of in.oedometer: per row
-    the two centres, the two ids, the periodic flag and the force on the
-    first particle."""
-    rows = np.loadtxt(path, skiprows=9, ndmin=2)
-    if rows.shape[1] != 12:
-        raise ValueError("%s: %d columns, expected the 12 of in.oedometer's "
-                         "final_contacts.txt" % (path, rows.shape[1]))
-    r = cols["radius"]
-    dn, floor = 2.0 * r.max(), (cols["z"] - r).min()
-    branch = rows[:, 0:3] - rows[:, 3:6]   # from the second centre to the first
-    normal = branch / np.linalg.norm(branch, axis=1)[:, None]
-    force = np.einsum("ij,ij->i", rows[:, 9:12], normal)
-    loaded = force > 1e-3 * force.mean()
-    h = (0.5 * (rows[:, 2] + rows[:, 5]) - floor) / dn
-    return h[loaded], normal[loaded], force[loaded]
-
-
-def anisotropies(normal, force):
-    """(a_c, a_n) of compute primary/fabric: sign(a_zz) sqrt(2/3 a:a) of
-    a = (15/2) dev(F) and of (15/2) (dev(Phi) - dev(F)), F the mean dyad of
-    the normals, Phi the normal-force-weighted one; None without contacts."""
-    if len(force) == 0:
-        return None, None
-    def scalar(dev):
-        a = 7.5 * dev
-        size = np.sqrt(2.0 / 3.0 * (a * a).sum())
-        return -size if a[2, 2] < 0 else size
-    def deviator(t):
-        return t - np.trace(t) / 3.0 * np.eye(3)
-    fabric = np.einsum("ij,ik->jk", normal, normal) / len(force)
-    phi = np.einsum("i,ij,ik->jk", force, normal, normal) / force.sum()
-    return scalar(deviator(fabric)), scalar(deviator(phi) - deviator(fabric))
+def compute_slices(vector, n, source=outputs.ROOT):
+    """The height slices of compute primary/fabric in its global vector (the
+    31 entries, 2 per direction bin, then the entries of
+    FABRIC_SLICE_ENTRIES per slice): a list of n {entry name: value}, the
+    lowest slice first, or None unless the vector holds n slices. The
+    direction bins' count follows from the length; the slices must join
+    (each one's top the next one's bottom) and hold the group's grains."""
+    fixed = len(outputs.fabric_vector(source))
+    entries = outputs.read_table(os.path.join(source, outputs.FABRIC_HEADER),
+                                 "FABRIC_SLICE_ENTRIES")
+    k = len(entries)
+    if vector is None:
+        return None
+    rest = len(vector) - fixed - k * n
+    if rest < 2 or rest % 2:
+        return None
+    first = fixed + rest
+    rows = [{e.name: float(vector[first + s * k + e.position - 1]) for e in entries}
+            for s in range(n)]
+    joined = all(abs(a["slice_top"] - b["slice_bottom"])
+                 <= 1e-9 * max(1.0, abs(b["slice_bottom"])) for a, b in zip(rows, rows[1:]))
+    whole = outputs.index(outputs.fabric_vector(source))["particles"]
+    grains = sum(r["slice_particles"] for r in rows)
+    if not joined or rows[0]["slice_bottom"] >= rows[-1]["slice_top"] \
+            or abs(grains - vector[whole]) > 0.5:
+        return None
+    return rows
 
 
 def share(value, form, none="-"):
@@ -156,12 +154,15 @@ def share(value, form, none="-"):
     return none if value is None else form % value
 
 
-def slices(cols, n, contacts=None):
+def slices(cols, n, computed=None):
     """Rows (lo, hi, grains, mass %, primary %, d_mean/d_N, fines % of the
     specimen's fines mass, primary % of the slice's fines mass, a_c, a_n),
-    heights in d_N from the floor, n slices of equal height; a_c and a_n
-    from contacts, the output of contact_dyads. A share of nothing (a slice
-    without grains, fines or contacts) is None."""
+    heights in d_N from the floor, n slices of equal height. With
+    `computed` (compute_slices: the compute's own slices) the grains, mass
+    and primary shares and a_c, a_n are the compute's; without, a_c and a_n
+    are None and the rest is the dump's. A share of nothing (a slice
+    without grains, fines or loaded contacts) is None. ValueError if the
+    compute's slices hold other grains than the dump's."""
     r, m, primary, dn, h, top = heights(cols)
     d = 2.0 * r
     order = np.argsort(d)
@@ -174,15 +175,20 @@ def slices(cols, n, contacts=None):
         g = (h >= edges[k]) & ((h < edges[k + 1]) if k < n - 1 else (h <= top))
         mass = m[g].sum()
         fm = m[g & fine].sum()
+        grains, mass_pct = int(g.sum()), 100.0 * mass / m.sum()
+        prim = 100.0 * m[g & primary].sum() / mass if mass > 0 else None
         a_c = a_n = None
-        if contacts is not None:
-            hc, normal, force = contacts
-            c = (hc >= edges[k]) & ((hc < edges[k + 1]) if k < n - 1 else np.ones(len(hc), bool))
-            if k == 0:
-                c |= hc < 0.0
-            a_c, a_n = anisotropies(normal[c], force[c])
-        out.append((edges[k], edges[k + 1], int(g.sum()), 100.0 * mass / m.sum(),
-                    100.0 * m[g & primary].sum() / mass if mass > 0 else None,
+        if computed is not None:
+            c = computed[k]
+            if int(round(c["slice_particles"])) != grains:
+                raise ValueError("slice %d: the compute counts %d grains, the dump %d "
+                                 "(not the same state?)" % (k + 1, c["slice_particles"], grains))
+            mass_pct = c["slice_mass_percent"]
+            if grains:
+                prim = c["slice_primary_percent"]
+            if c["slice_fabric_contacts"] > 0:
+                a_c, a_n = c["slice_fabric_anisotropy"], c["slice_force_anisotropy"]
+        out.append((edges[k], edges[k + 1], grains, mass_pct, prim,
                     (m[g] * d[g]).sum() / mass / dn if mass > 0 else None,
                     100.0 * fm / m[fine].sum(),
                     100.0 * m[g & fine & primary].sum() / fm if fm > 0 else None,
@@ -212,15 +218,19 @@ def main():
             cols = last_snapshot(dump)
             rows, top = layers(cols)
             if args.slices:
-                cpath = os.path.join(path, "final_contacts.txt")
-                contacts = contact_dyads(cpath, cols) if os.path.isfile(cpath) else None
-                srows, top, d15 = slices(cols, args.slices, contacts)
+                gpath = os.path.join(os.path.dirname(dump), "fabric_global.txt")
+                computed = compute_slices(outputs.read_global(gpath), args.slices)
+                srows, top, d15 = slices(cols, args.slices, computed)
         except ValueError as e:
             sys.exit("fabric_layers: %s: %s" % (dump, e))
         if args.slices:
             name = os.path.basename(os.path.normpath(path))
             print("# %s: height %.2f coarsest diameters; fines: finer than d15 = %.3f d_N"
                   % (dump, top, d15))
+            if computed is None:
+                print("# a_c, a_n: none; %s holds no %d height slices of compute "
+                      "primary/fabric (define it with 'slices %d')"
+                      % (gpath, args.slices, args.slices))
             print("%13s %8s %7s %9s %10s %9s %11s %6s %6s" % ("height/d_N", "grains", "mass%",
                   "primary%", "d_mean/d_N", "fines%", "fines_prim%", "a_c", "a_n"))
             for lo, hi, n, mass, prim, dm, fsh, fprim, a_c, a_n in srows:
