@@ -106,13 +106,14 @@ SliceSums accumulate_slices(const std::vector<Particle>& particles,
   std::vector<int> slice_of(n);
   for (int p = 0; p < n; ++p) {
     const int k = slices.of(z[p]);
+    slice_of[p] = k;
+    if (!std::isfinite(z[p])) continue;  // a broken state: in no slice
     if (k < 0) {
       std::ostringstream m;
       m << "particle " << particles[p].id << " at height " << z[p]
         << " lies outside the height slices";
       fail(m.str());
     }
-    slice_of[p] = k;
     const bool primary = classification.fraction[p] == Fraction::primary;
     sums.at(k, S::particles) += 1.0;
     sums.at(k, S::mass) += particles[p].mass;
@@ -142,8 +143,9 @@ SliceSums accumulate_slices(const std::vector<Particle>& particles,
            " has a non-finite force or a zero or non-finite normal");
     if (!is_loaded(k.normal_force, threshold_force)) continue;
     // half for each end; the other rank adds the partner's half
-    add(slice_of[k.i], 0.5, k.normal_force, k.normal);
-    if (k.complete) add(slice_of[k.j], 0.5, k.normal_force, k.normal);
+    if (slice_of[k.i] >= 0) add(slice_of[k.i], 0.5, k.normal_force, k.normal);
+    if (k.complete && slice_of[k.j] >= 0)
+      add(slice_of[k.j], 0.5, k.normal_force, k.normal);
   }
   if (options.walls_in_fabric)
     for (std::size_t c = 0; c < walls.size(); ++c) {
@@ -153,7 +155,7 @@ SliceSums accumulate_slices(const std::vector<Particle>& particles,
           w.normal.squaredNorm() == 0.0)
         fail("wall contact " + std::to_string(c) +
              " has a non-finite force or a zero or non-finite normal");
-      if (is_loaded(w.normal_force, threshold_force))
+      if (is_loaded(w.normal_force, threshold_force) && slice_of[w.i] >= 0)
         add(slice_of[w.i], 1.0, w.normal_force, w.normal);
     }
   return sums;

@@ -108,9 +108,10 @@ class SliceSums {
 };
 
 // The sums of this rank's grains (z as for height_extent), with the
-// classification and threshold of the whole specimen. Throws
-// std::invalid_argument on inputs that accumulate() would reject, or on a
-// grain whose centre lies outside the slices' extent.
+// classification and threshold of the whole specimen. A grain at a
+// non-finite height (a broken state, which the compute warns of) is in no
+// slice. Throws std::invalid_argument on inputs that accumulate() would
+// reject, or on a grain whose finite centre lies outside the slices' extent.
 SliceSums accumulate_slices(const std::vector<Particle>& particles,
                             const std::vector<double>& z,
                             const std::vector<ParticleContact>& contacts,

@@ -213,6 +213,14 @@ TEST(HeightSlices, BadInputIsRejectedNamingIt) {
               std::string::npos) << e.what();
   }
   const HeightSlices ok(height_extent(s.particles, s.z), 2);
+  // a grain at a non-finite height (a broken state) is in no slice
+  std::vector<double> broken = s.z;
+  broken[4] = NAN;
+  const std::vector<SliceSummary> r = finalise_slices(
+      accumulate_slices(s.particles, broken, s.contacts, s.walls,
+                        a.classification, 0.0, ok, s.options), ok);
+  EXPECT_EQ(r[0].particles + r[1].particles, 5);
+  EXPECT_NEAR(r[1].fabric_contacts, 2.0, 1e-12);  // 4-5: only the end at 5
   EXPECT_THROW(accumulate_slices(s.particles, {0.5}, s.contacts, s.walls,
                                  a.classification, 0.0, ok, s.options),
                std::invalid_argument);
