@@ -110,34 +110,49 @@ print "NOT REACHED"
 """
 
 
-def main():
-    args = su.parse_args(__doc__)
-    su.fresh_dir(args.work)
-    chk = su.Checker()
-    scene = os.path.join(args.source, "input_scripts", "in.oedometer")
+def scene_path(args):
+    return os.path.join(args.source, "input_scripts", "in.oedometer")
+
+
+def run_scene(args, name, variables, scene=None, timeout=600):
+    """The scene (or a copy of it) with `variables` and out = WORK/name."""
+    out = os.path.join(args.work, name)
+    res = su.run_launcher(args, scene or scene_path(args), variables=dict(variables, out=out),
+                          log=out + ".log", cwd=args.source, timeout=timeout)
+    return res, out
+
+
+def error_lines(res):
+    return [l for l in res.text.splitlines() if l.startswith("ERROR")]
+
+
+def check_cases(args, chk):
+    """1-8 (CASES): each stops with a non-zero exit status and one ERROR
+    naming its phrases, and prints no result."""
     for name, variables, phrases in CASES:
-        out = os.path.join(args.work, name.replace(" ", "_"))
-        v = {"out": out, "t_max": 0.01, "side": 3.3}
+        v = {"t_max": 0.01, "side": 3.3}
         v.update(variables)
-        res = su.run_launcher(args, scene, variables=v, log=out + ".log", cwd=args.source, timeout=600)
-        errors = [l for l in res.text.splitlines() if l.startswith("ERROR")]
+        res, _ = run_scene(args, name.replace(" ", "_"), v)
+        errors = error_lines(res)
         chk.check("%s: exit status %s is not 0" % (name, res.returncode),
                   res.returncode not in (0, None), res.describe())
         chk.check("%s: one ERROR (screen and log) naming %s" % (name, phrases),
                   len(set(errors)) == 1 and all(p in errors[0] for p in phrases), errors or res.describe())
         chk.check("%s: no result printed" % name, "FABRIC:" not in res.text)
 
+
+def check_grains_leave(args, chk):
+    """8. Grains thrown out of the container by a copy of the scene."""
     kicked = os.path.join(args.work, "in.oedometer_kicked")
-    text = open(scene).read()
+    with open(scene_path(args)) as f:
+        text = f.read()
     marker = "run $(f_rest[2]) post no\n"
     chk.check("the scene has the first loading block the fault goes before", marker in text)
     su.write_file(kicked, text.replace(marker, "velocity all set 0 0 -50\n" + marker, 1))
-    out = os.path.join(args.work, "grains_leave")
-    res = su.run_launcher(args, kicked, variables={
-        "out": out, "t_max": 0.01, "side": 3.3, "overlap_max": "1e9", "kn": "2e7",
-        "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")},
-        log=out + ".log", cwd=args.source, timeout=600)
-    errors = [l for l in res.text.splitlines() if l.startswith("ERROR")]
+    res, _ = run_scene(args, "grains_leave", {
+        "t_max": 0.01, "side": 3.3, "overlap_max": "1e9", "kn": "2e7",
+        "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")}, scene=kicked)
+    errors = error_lines(res)
     chk.check("grains leaving the container: exit status %s is not 0, one ERROR counting them "
               "against the grains at the start, no result" % res.returncode,
               res.returncode not in (0, None) and len(set(errors)) == 1
@@ -145,11 +160,13 @@ def main():
               and "FABRIC:" not in res.text,
               errors or res.describe())
 
-    out = os.path.join(args.work, "empty_interval")
-    res = su.run_launcher(args, scene, variables={
-        "out": out, "t_max": 0.002, "side": 3.3, "arrangement": "layerwise", "kappa": 2000,
-        "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")},
-        log=out + ".log", cwd=args.source, timeout=600)
+
+def check_empty_interval(args, chk):
+    """9. An interval the packer leaves empty is classified anyway; kappa
+    sets the linear springs."""
+    res, _ = run_scene(args, "empty_interval", {
+        "t_max": 0.002, "side": 3.3, "arrangement": "layerwise", "kappa": 2000,
+        "psd": os.path.join(args.source, "input_scripts", "psd", "cu2.0.txt")})
     chk.check("an interval left empty by the packer: classified anyway (exit %s, no ERROR, FABRIC line)"
               % res.returncode, res.returncode == 0 and not res.errors() and "FABRIC:" in res.text
               and "particles not placed" in res.text, res.describe())
@@ -167,10 +184,13 @@ def main():
               and abs(float(m.group(1)) / (2000 * 1e5 * float(dn.group(1))) - 1) < 1e-5
               and abs(float(m.group(3)) - 2000) < 1e-6, res.text[-1500:])
 
-    out = os.path.join(args.work, "stress_too_low")
-    res = su.run_launcher(args, scene, variables={
-        "out": out, "side": 3.3, "hertz": 1, "stress": "1e3"},
-        log=out + ".log", cwd=args.source, timeout=900)
+
+def check_stress_too_low(args, chk):
+    """10. A stress too low to come to rest within t_max: STOP not at rest,
+    a WARNING naming t_max, the primary fabric's change as the series has
+    it."""
+    res, out = run_scene(args, "stress_too_low", {"side": 3.3, "hertz": 1, "stress": "1e3"},
+                         timeout=900)
     warnings = [l for l in res.text.splitlines() if l.startswith("WARNING: not at rest")]
     chk.check("a stress too low for t_max: exit %s, STOP not at rest at t_max 0.3 s, a WARNING "
               "naming t_max and the stress, never 'at rest'" % res.returncode,
@@ -192,6 +212,9 @@ def main():
               moved is not None and want is not None and len(rows) > 4
               and abs(float(moved.group(1)) - want) < 1e-3, res.text[-1500:])
 
+
+def check_error_command(args, chk):
+    """11. The `error` command, with a message and without."""
     inp = su.write_file(os.path.join(args.work, "in.error"), ERROR_SCRIPT)
     res = su.run_launcher(args, inp, timeout=60)
     chk.check("error: exit status %s" % res.returncode, res.returncode == 1, res.describe())
@@ -201,6 +224,17 @@ def main():
     res = su.run_launcher(args, inp, timeout=60)
     chk.check("error without a message: a usage error",
               res.returncode == 1 and "give the message to stop with" in res.text, res.text[-500:])
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    check_cases(args, chk)
+    check_grains_leave(args, chk)
+    check_empty_interval(args, chk)
+    check_stress_too_low(args, chk)
+    check_error_command(args, chk)
     chk.finish()
 
 
