@@ -52,10 +52,23 @@ def fabric(text):
     return float(m.group(1)) if m else None
 
 
-def main():
-    args = su.parse_args(__doc__)
-    su.fresh_dir(args.work)
-    chk = su.Checker()
+def thermo_column(text, name):
+    """(step, value) of thermo column `name` in every row LIGGGHTS printed
+    under a header line 'Step ... name ...', by the header's words."""
+    rows, header = [], None
+    for line in text.splitlines():
+        w = line.split()
+        if w[:1] == ["Step"]:
+            header = w if name in w else None
+        elif header is not None and len(w) == len(header) and re.match(r"^\d+$", w[0]):
+            rows.append((int(w[0]), float(w[header.index(name)])))
+        else:
+            header = None
+    return rows
+
+
+def runner(args):
+    """run(out, extra, nprocs, log): the scene with VARS, out and `extra`."""
     scene = os.path.join(args.source, "input_scripts", "in.oedometer")
 
     def run(out, extra, nprocs=None, log="job"):
@@ -63,9 +76,11 @@ def main():
         return su.run_launcher(args, scene, nprocs=nprocs, variables=v,
                                log=os.path.join(args.work, log + ".log"),
                                cwd=args.source, timeout=600)
+    return run
 
-    # 1. a job that ends with a checkpoint
-    out = os.path.join(args.work, "split")
+
+def check_checkpoint(chk, run, out):
+    """1. A job that ends with a checkpoint."""
     first = run(out, {"checkpoint": 3}, log="first")
     ck = [l for l in first.output.splitlines() if l.startswith("CHECKPOINT:")]
     chk.check("checkpoint 3: the job ends with exit code 0 and a CHECKPOINT line at step 6000",
@@ -77,7 +92,10 @@ def main():
               and not os.path.exists(os.path.join(out, "final.dump"))
               and "STOP:" not in first.output)
 
-    # 2. resumed on 2 ranks, to the stop
+
+def check_resume(chk, run, out):
+    """2. Resumed on 2 ranks, to the stop: the first job's grains, one
+    series row per check, the loading time from the start."""
     second = run(out, {"resume": 1}, nprocs=2, log="second")
     stop = [l for l in second.output.splitlines() if l.startswith("STOP:")]
     chk.check("resume 1 on 2 ranks runs to the stop", second.returncode == 0 and stop
@@ -86,8 +104,8 @@ def main():
     if not chk.check("the resumed job writes the final state", os.path.isfile(final)):
         chk.finish()
     snap = su.last_snapshot(final)
-    first_vtk = open(os.path.join(out, "grains_0.vtk")).read()
-    n0 = re.search(r"POINTS (\d+)", first_vtk)
+    with open(os.path.join(out, "grains_0.vtk")) as f:
+        n0 = re.search(r"POINTS (\d+)", f.read())
     chk.check("no second specimen: the final state holds the %s grains of the first job (got %d)"
               % (n0.group(1) if n0 else "?", snap.natoms),
               n0 and snap.natoms == int(n0.group(1)))
@@ -99,13 +117,16 @@ def main():
               "got %s" % steps)
     chk.check("no fabric_series.part left", not os.path.exists(os.path.join(out, "fabric_series.part")))
     dt = re.search(r"^TIMESTEP: .*; dt = (\S+) s", second.output, re.M)
-    rows = re.findall(r"^ +(\d+) +([0-9.eE+-]+) ", re.split(r"Step +t_load", second.output, 1)[-1], re.M)
-    bad = [(int(st), float(t)) for st, t in rows
-           if dt and abs(float(t) - int(st) * float(dt.group(1))) > 1e-6 * int(st) * float(dt.group(1))]
+    rows = thermo_column(second.output, "t_load")
+    bad = [(st, t) for st, t in rows
+           if dt and abs(t - st * float(dt.group(1))) > 1e-6 * st * float(dt.group(1))]
     chk.check("the resumed job's loading time (thermo t_load) is steps x dt from the start of "
               "the loading (%d rows)" % len(rows), dt and rows and not bad, bad[:5])
 
-    # 3. the driver: a checkpoint every 8 blocks, against the run without
+
+def check_driver(args, chk, run):
+    """3. The driver: a checkpoint every 8 blocks, against the run without
+    (folder 'whole', which part 4 compares with too)."""
     sys.path.insert(0, os.path.join(args.source, "tools"))
     import oedometer_runs
     whole = run(os.path.join(args.work, "whole"), {}, log="whole")
@@ -114,7 +135,8 @@ def main():
     progress = io.StringIO()
     with contextlib.redirect_stdout(progress):
         row = oedometer_runs.run_scene(rundir, dict(VARS, checkpoint=8))
-    text = open(os.path.join(rundir, "screen.txt")).read()
+    with open(os.path.join(rundir, "screen.txt")) as f:
+        text = f.read()
     jobs = text.count("CHECKPOINT: written")
     lines = [l for l in progress.getvalue().splitlines() if "going on from the checkpoint" in l]
     chk.check("the driver prints a progress line per checkpoint (%d lines, %d checkpoints)"
@@ -124,22 +146,28 @@ def main():
     p_split = float(row["primary_mass_pct"]) if row else None
     chk.check("the driver goes on from each checkpoint to the stop (%d checkpoints), at rest"
               % jobs, row and row["at_rest"] == "yes" and jobs >= 2, text[-2000:])
-    wall = float(open(os.path.join(rundir, "wall_s.txt")).read())
+    with open(os.path.join(rundir, "wall_s.txt")) as f:
+        wall = float(f.read())
     chk.check("the row's wall time is that of all the jobs (%.1f s)" % wall,
               row and abs(float(row["wall_s"]) - wall) < 0.2 and wall > 0)
     chk.check("primary %% by mass resumed every 8 blocks %s, without checkpoints %s: within 5 points"
               % (p_split, p_whole), p_split is not None and p_whole is not None
               and abs(p_split - p_whole) <= 5.0)
 
-    # 4. an early resume: the lid's speed handed to the servo
-    def block(path, step):
-        s = su.outputs.read_series(path)
-        hit = [i for i, st in enumerate(s["step"]) if int(st) == step]
-        return (s["lid_stress"][hit[0]], s["stress_error_rms"][hit[0]]) if hit else None
+
+def block(path, step):
+    """(lid stress, rms stress error) of the series row at `step`, or None."""
+    s = su.outputs.read_series(path)
+    hit = [i for i, st in enumerate(s["step"]) if int(st) == step]
+    return (s["lid_stress"][hit[0]], s["stress_error_rms"][hit[0]]) if hit else None
+
+
+def check_early_resume(args, chk, run):
+    """4. An early resume: the lid's speed handed to the servo."""
     early = os.path.join(args.work, "early")
     e1 = run(early, {"checkpoint": 1, "t_max": 0.004}, log="early1")
-    ck_in = open(os.path.join(early, "checkpoint.in")).read() if os.path.isfile(
-        os.path.join(early, "checkpoint.in")) else ""
+    ck_path = os.path.join(early, "checkpoint.in")
+    ck_in = open(ck_path).read() if os.path.isfile(ck_path) else ""
     e2 = run(early, {"checkpoint": 1, "t_max": 0.004, "resume": 1}, log="early2")
     v_ck = re.search(r"^variable lid_v_ck equal (\S+)", ck_in, re.M)
     line = re.search(r"^RESUME: the lid moved (\S+) m/s", e2.output, re.M)
@@ -157,7 +185,10 @@ def main():
               after and ref and abs(after[0] - ref[0]) <= 2000.0
               and after[1] <= 1.2 * ref[1] + 0.01)
 
-    # 5. bad values
+
+def check_bad_values(args, chk, run):
+    """5. Bad values stop with an ERROR naming them; no checkpoint to
+    resume from, with LIGGGHTS' ERROR naming checkpoint.in."""
     for extra, value in (({"resume": 2}, "2"), ({"checkpoint": -1}, "-1")):
         key = list(extra)[0]
         r = run(os.path.join(args.work, "bad_%s" % key), extra, log="bad_" + key)
@@ -172,6 +203,19 @@ def main():
     chk.check("resume 1 without a checkpoint: an ERROR naming checkpoint.in",
               r.returncode != 0 and not r.crashed() and errs and "checkpoint.in" in errs[0],
               r.describe())
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    run = runner(args)
+    out = os.path.join(args.work, "split")
+    check_checkpoint(chk, run, out)
+    check_resume(chk, run, out)
+    check_driver(args, chk, run)
+    check_early_resume(args, chk, run)
+    check_bad_values(args, chk, run)
     chk.finish()
 
 
