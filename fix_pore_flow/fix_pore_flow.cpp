@@ -19,16 +19,19 @@ using namespace FixConst;
 
 namespace {
 
-// The core solves along z. The fix's flow axis a is turned onto z by the
-// cyclic permutation core[k] = box[(a + 1 + k) mod 3] (the identity for z),
-// which keeps the frame right-handed.
-fabric::Vec3 to_core(const double *p, int axis) {
-  return {p[(axis + 1) % 3], p[(axis + 2) % 3], p[axis]};
+// The core solves along z, from lo to hi. The fix's flow axis a is turned
+// onto z by the cyclic permutation core[k] = box[(a + 1 + k) mod 3] (the
+// identity for z); a flow against the axis (direction -x, -y, -z) by a half
+// turn about the core's y axis after it, (x, y, z) -> (-x, y, -z). Both keep
+// the frame right-handed, and the half turn is its own inverse.
+fabric::Vec3 to_core(const double *p, int axis, int sign) {
+  return {sign * p[(axis + 1) % 3], p[(axis + 2) % 3], sign * p[axis]};
 }
 
-std::array<double, 3> from_core(const fabric::Vec3 &v, int axis) {
+std::array<double, 3> from_core(const fabric::Vec3 &v, int axis, int sign) {
+  const fabric::Vec3 u{sign * v[0], v[1], sign * v[2]};
   std::array<double, 3> p{};
-  for (int k = 0; k < 3; ++k) p[(axis + 1 + k) % 3] = v[k];
+  for (int k = 0; k < 3; ++k) p[(axis + 1 + k) % 3] = u[k];
   return p;
 }
 
@@ -87,7 +90,7 @@ FixPoreFlow::FixPoreFlow(LAMMPS *lmp, int narg, char **arg)
       if (!(p[0] > p[1]))
         args.fail("pressure P_in " + std::string(args[i + 1]) +
                   " must exceed P_out " + args[i + 2] +
-                  " (Pa: the inflow face lo holds the higher pressure; "
+                  " (Pa: the inflow face holds the higher pressure; "
                   "equal pressures drive no flow)");
       options_.inflow_pressure = p[0];
       options_.outflow_pressure = p[1];
@@ -99,7 +102,9 @@ FixPoreFlow::FixPoreFlow(LAMMPS *lmp, int narg, char **arg)
                    "must be positive (Pa s; water at 20 C: 1e-3)");
       i += 2;
     } else if (kw == "direction") {
-      axis_ = args.choice(i, {"x", "y", "z"});
+      const int c = args.choice(i, {"x", "y", "z", "-x", "-y", "-z"});
+      axis_ = c % 3;
+      sign_ = c < 3 ? 1 : -1;
       i += 2;
     } else {
       args.unknown_keyword(i);
@@ -119,8 +124,13 @@ FixPoreFlow::FixPoreFlow(LAMMPS *lmp, int narg, char **arg)
                       "atom (atom_style granular or sphere)");
   if (!atom->tag_enable)
     error->all(FLERR, "Fix pore/flow: needs atom IDs (atom_modify id yes)");
-  options_.box.lo = to_core(box.lo.data(), axis_);
-  options_.box.hi = to_core(box.hi.data(), axis_);
+  // the box's corners in the core's frame (a half turn swaps lo and hi)
+  const fabric::Vec3 a = to_core(box.lo.data(), axis_, sign_);
+  const fabric::Vec3 b = to_core(box.hi.data(), axis_, sign_);
+  for (int k = 0; k < 3; ++k) {
+    options_.box.lo[k] = std::min(a[k], b[k]);
+    options_.box.hi[k] = std::max(a[k], b[k]);
+  }
 
   vector_flag = 1;
   size_vector = fabric::kPoreFlowEntries;
@@ -197,7 +207,7 @@ std::vector<fabric::Sphere> FixPoreFlow::gather() {
   for (long k = 0; k < grains; ++k) {
     const double *r = &all[kRecord * order[k]];
     ids_[k] = static_cast<tagint>(r[0]);
-    spheres[k] = {to_core(r + 1, axis_), r[4]};
+    spheres[k] = {to_core(r + 1, axis_, sign_), r[4]};
   }
   return spheres;
 }
@@ -219,7 +229,7 @@ void FixPoreFlow::solve() {
     error->all(FLERR, ("Fix pore/flow: " + what).c_str());
   }
   force_.resize(grains);
-  for (long k = 0; k < grains; ++k) force_[k] = from_core(flow.force[k], axis_);
+  for (long k = 0; k < grains; ++k) force_[k] = from_core(flow.force[k], axis_, sign_);
   vector_ = fabric::pore_flow_vector(flow, options_,
                                      static_cast<double>(update->ntimestep));
   solved_step_ = update->ntimestep;

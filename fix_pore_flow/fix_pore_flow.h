@@ -42,6 +42,7 @@ class FixPoreFlow : public Fix {
 
   int every_ = 0;                   // steps between two solves
   int axis_ = 2;                    // the flow axis: 0 x, 1 y, 2 z
+  int sign_ = 1;                    // 1: the flow runs from lo to hi; -1: hi to lo
   fabric::PoreFlowOptions options_;  // in the core's frame (z the flow axis)
   std::vector<tagint> ids_;          // per grain of the last solve: its ID,
                                      // increasing

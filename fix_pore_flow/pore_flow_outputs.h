@@ -17,10 +17,10 @@
 // The flow axis is the fix's direction (z by default); "lo" and "hi" are
 // the box's faces across it.
 #define PORE_FLOW_VECTOR_ENTRIES(X)                                            \
-  X(1, inflow, "flow rate in through the face lo of the flow axis, m^3/s")    \
-  X(2, outflow, "flow rate out through the face hi of the flow axis, m^3/s")  \
+  X(1, inflow, "flow rate in through the inflow face, m^3/s")                 \
+  X(2, outflow, "flow rate out through the outflow face, m^3/s")              \
   X(3, permeability, "K = Q mu L / (A dp), Q the outflow, m^2")                \
-  X(4, fluid_force, "total fluid force on the group's grains along the flow axis, N") \
+  X(4, fluid_force, "total fluid force on the group's grains along the flow, N") \
   X(5, pressure_drop, "P_in - P_out, Pa")                                      \
   X(6, pores, "pores of the network")                                          \
   X(7, iterations, "conjugate-gradient iterations of the solve")               \

@@ -123,6 +123,22 @@ def check_balance(chk, vec, sums, grains, what, axis, area):
               rel(grains[FLOW_FORCE[axis]].sum(), vec["fluid_force"]) < 1e-9)
 
 
+def check_reversed(args, chk, root, scene, one):
+    """direction -z: the same network with the flow from the top down. A
+    linear network passes the same flow either way (reciprocity), so the
+    figures are z's; the grains' forces sum to the total along -z."""
+    down = run_measured(args, chk, root, scene, "down", extra_fix=" direction -z")
+    if not (down and one):
+        return
+    vec, sums = down[0], down[1]
+    same = all(rel(vec[k], one[0][k]) < 1e-9 for k in ("inflow", "outflow", "permeability", "fluid_force"))
+    chk.check("direction -z: inflow %.12g, permeability %.12g, fluid force %.9g N as along z"
+              % (vec["inflow"], vec["permeability"], vec["fluid_force"]), same)
+    chk.check("direction -z: the grains' forces sum to %.9g N along z, minus the total %.9g N"
+              % (sums[2], vec["fluid_force"]),
+              rel(-sums[2], vec["fluid_force"]) < 1e-6 and rel(-sums[5], vec["fluid_force"]) < 1e-9)
+
+
 def check_permeability(args, chk, root, vec, grains, side):
     r = grains["radius"]
     n = 1.0 - (4.0 / 3.0 * np.pi * r ** 3).sum() / side ** 3
@@ -216,7 +232,7 @@ BAD = (
     ("no pressure", "", [r"'pressure' is required"]),
     ("no every", "", [r"'every' is required"]),
     ("unknown keyword", " speed 3", [r"speed", r"every box pressure viscosity direction"]),
-    ("direction w", " direction w", [r"direction 'w'", r"x, y or z"]),
+    ("direction w", " direction w", [r"direction 'w'", r"x, y, z, -x, -y or -z"]),
     ("grains outside the box", "box 0 0.002 0 0.003 0 0.003",
      [r"sphere \d+ \(atom ID \d+\) has its centre outside the box"]),
 )
@@ -279,6 +295,7 @@ def main():
     along_x = run_measured(args, chk, root, scene, "along_x", extra_fix=" direction x")
     if along_x:
         check_balance(chk, along_x[0], along_x[1], along_x[2], "direction x", 0, side * side)
+    check_reversed(args, chk, root, scene, one)
     check_ranks(args, chk, root, scene, one)
     check_every(args, chk, root, scene)
     check_page(args, chk, root, text, blocks, scene)
