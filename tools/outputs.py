@@ -549,3 +549,49 @@ def pore_flow_vector(source=ROOT):
     """fix pore/flow: the entries of the global vector."""
     return read_table(os.path.join(source, PORE_FLOW_HEADER),
                       "PORE_FLOW_VECTOR_ENTRIES")
+
+
+# ---- the seepage test (input_scripts/oedometer/seepage.in) -----------------
+
+# suffusion.txt: one row per stage of the scene's seepage test, these
+# columns (the file's column line names them; read_suffusion checks it).
+SUFFUSION_COLUMNS = (
+    ("gradient", "gradient"),
+    ("pressure_drop(Pa)", "pressure_drop"),
+    ("steps", "steps"),
+    ("eroded_pct_of_specimen", "eroded_pct"),
+    ("eroded_pct_of_loose", "eroded_loose_pct"),
+    ("stage_eroded_pct", "stage_eroded_pct"),
+    ("grains_eroded", "grains_eroded"),
+    ("primary_pct_by_mass", "primary_pct"),
+    ("porosity", "porosity"),
+    ("lid_stress(Pa)", "lid_stress"),
+    ("permeability(m2)", "permeability"),
+)
+
+
+def read_suffusion(path):
+    """A run's suffusion.txt as {name: numpy array} (names of
+    SUFFUSION_COLUMNS, one entry per stage, in the order run) plus
+    'gradient_text': the gradients as the scene wrote them (the stage's
+    eroded_i<gradient>.txt). ValueError if the column line is not the
+    table's."""
+    words = None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") and line[1:].split()[:1] == ["gradient"]:
+                words = line[1:].split()
+    want = [w for w, _ in SUFFUSION_COLUMNS]
+    if words != want:
+        raise ValueError("%s: columns %s, expected %s (tools/outputs.py)" % (path, words, want))
+    rows = data_rows(path)
+    if any(len(r) != len(want) for r in rows):
+        raise ValueError("%s: a row without the %d columns" % (path, len(want)))
+    out = {name: np.array([float(r[i]) for r in rows]) for i, (_, name) in enumerate(SUFFUSION_COLUMNS)}
+    out["gradient_text"] = [r[0] for r in rows]
+    return out
+
+
+def eroded_file(run, gradient_text):
+    """The outlet file of one stage of the seepage test."""
+    return os.path.join(run, "eroded_i%s.txt" % gradient_text)

@@ -173,7 +173,9 @@ def run_launcher(args, input_path, nprocs=None, variables=None, log=None,
     cmd = [] if nprocs is None else mpirun_prefix(args, nprocs)
     cmd += [args.launcher, "-in", input_path, "-log", log, "-echo", "both"]
     for name, value in (variables or {}).items():
-        cmd += ["-var", name, str(value)]
+        # a list: an index variable of several values (-var name v1 v2 ...)
+        values = value if isinstance(value, (list, tuple)) else [value]
+        cmd += ["-var", name] + [str(v) for v in values]
     timeout = args.timeout if timeout is None else timeout
     t0 = time.time()
     try:

@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Scene test: the seepage test of in.oedometer (-var gradients ...).
+
+A Cu 2.5 DA specimen at side 3.3 (4,188 grains) brought to rest,
+then water pushed down through it at gradient 0 and then 3000 (short
+stages: blocks of 1,000 steps, 2 to 3 of them). Checked:
+
+1. one suffusion.txt row per stage, read by name (tools/outputs.py), and a
+   SEEPAGE line per stage that quotes the row;
+2. nothing is lost but what the outlet counts: the eroded share of the
+   specimen's volume is the volume of the grains in the stages'
+   eroded_i<gradient>.txt files (to 1e-6 of the specimen), and the grains
+   eroded are as many as the files' lines;
+3. the filter holds: no grain coarser than the filter's opening (the
+   soil's d60) leaves;
+4. the lid holds the target stress at the end of each stage (within 5 %);
+5. the seepage force acts: gradient 3000 (a pressure drop about the stress) erodes more than gradient 0 did in the same short stage;
+6. bad input stops with an ERROR naming the value: a negative gradient
+   after the first, a negative opening, a block that is not a multiple of
+   store_every, Cundall's damping 1.
+"""
+import glob
+import math
+import os
+import re
+import sys
+
+import scene_util as su
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import outputs  # noqa: E402
+
+SCENE = {"psd": "input_scripts/psd/cu2.5.txt", "side": 3.3, "stage_block": 1000,
+         "stage_min": 2, "stage_max": 3, "flow_every": 200}
+
+
+def run(args, name, **extra):
+    out = os.path.join(args.work, name)
+    variables = dict(SCENE, out=out)
+    variables.update(extra)
+    res = su.run_launcher(args, os.path.join(args.source, "input_scripts", "in.oedometer"),
+                          variables=variables, log=out + ".log", cwd=args.source, timeout=600)
+    return out, res
+
+
+def check_stages(chk, out, res):
+    rows = outputs.read_suffusion(os.path.join(out, "suffusion.txt"))
+    lines = list(dict.fromkeys(re.findall(
+        r"^SEEPAGE: gradient (\S+) .*? for (\d+) steps: eroded (\S+) % of the specimen", res.text, re.M)))
+    chk.check("two stages, rows and SEEPAGE lines agree (%s)" % lines,
+              rows["gradient_text"] == ["0", "3000"] and len(lines) == 2
+              and all(abs(float(e) - r) < 1e-9 for (_, _, e), r in zip(lines, rows["eroded_pct"])),
+              res.text[-1500:])
+    return rows
+
+
+def check_balance(chk, out, rows, d60):
+    head = open(os.path.join(out, "suffusion.txt")).readline()
+    v0 = float(re.search(r"\((\S+) m\^3 of grains\)", head).group(1))
+    left = [outputs.read_outlet(outputs.eroded_file(out, g)) for g in rows["gradient_text"]]
+    diam = [d for t in left for d in t["diameter"]]
+    vol = sum(math.pi / 6.0 * d ** 3 for d in diam)
+    chk.check("the eroded share %.6f %% is the outlet files' %d grains (%.6f %%)"
+              % (rows["eroded_pct"][-1], len(diam), 100.0 * vol / v0),
+              abs(100.0 * vol / v0 - rows["eroded_pct"][-1]) < 1e-4
+              and len(diam) == int(rows["grains_eroded"][-1]) and len(diam) > 0, "")
+    chk.check("no grain coarser than the filter's opening %.4g m left (largest %.4g m)"
+              % (d60, max(diam) if diam else 0), all(d < d60 * 1.0001 for d in diam), "")
+    chk.check("the lid holds the stress at the end of each stage (%s Pa)" % rows["lid_stress"],
+              all(abs(s / 1e5 - 1.0) < 0.05 for s in rows["lid_stress"]), "")
+    chk.check("gradient 3000 erodes more than gradient 0 (%.4f against %.4f %%)"
+              % (rows["stage_eroded_pct"][1], rows["stage_eroded_pct"][0]),
+              rows["stage_eroded_pct"][1] > rows["stage_eroded_pct"][0] + 1e-3, "")
+
+
+BAD = [
+    ("a negative gradient", {"gradients": [-2]}, r"ERROR.*gradient -2"),
+    ("a negative opening", {"gradients": [0], "opening": -1e-4}, r"ERROR.*opening -0.0001"),
+    ("a block not a multiple of store_every", {"gradients": [0], "stage_block": 750},
+     r"ERROR.*stage_block 750"),
+    ("Cundall's damping 1", {"gradients": [0], "seep_damping": 1}, r"ERROR.*damping 1 must lie"),
+]
+
+
+def check_bad(args, chk):
+    for name, extra, pattern in BAD:
+        out, res = run(args, "bad_" + name.split()[-1], **extra)
+        m = re.search(pattern, res.text)
+        chk.check("%s: ERROR (%s)" % (name, m.group(0)[:120] if m else "none"),
+                  res.returncode != 0 and m is not None, res.text[-800:])
+
+
+def main():
+    args = su.parse_args(__doc__)
+    su.fresh_dir(args.work)
+    chk = su.Checker()
+    out, res = run(args, "seep", gradients=[0, 3000])
+    if chk.check("the scene runs the seepage test (%.0f s)" % res.seconds, res.returncode == 0,
+                 res.describe()):
+        rows = check_stages(chk, out, res)
+        d60 = float(re.search(r"d60 = (\S+),", res.text).group(1))   # psd_info's line
+        check_balance(chk, out, rows, d60)
+        chk.check("ParaView dumps of each stage",
+                  glob.glob(os.path.join(out, "seepage_i3000_*.vtk")) != [], "")
+    check_bad(args, chk)
+    chk.finish()
+
+
+if __name__ == "__main__":
+    main()
