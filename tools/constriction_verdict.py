@@ -4,8 +4,8 @@ oedometer study (tools/oedometer_study.py): per run, the final state
 (OUT/runs/NAME/final.dump, with the class c_pf[2] of compute primary/fabric)
 is read into the launcher, grouped into primary (class 1) and loose (0)
 grains, and compute constriction/size gives the CSD of the primary fabric
-(loose group: the verdict; psd: the classical criteria) and of the whole
-specimen. Writes, into --dest:
+(loose group: the verdict, with D_c35 by number and by area; psd: the
+classical criteria) and of the whole specimen. Writes, into --dest:
   verdict.csv           one row per run
   csd_NAME.txt          the two cumulative CSDs (files of the compute)
   fig_NAME.png          PSD, PFD, LPD and the two CSDs on one size axis
@@ -63,10 +63,14 @@ group primary type 1
 group loose type 2
 compute cp primary constriction/size loose loose psd {psd} csd csd_primary.txt
 compute ca all constriction/size psd {psd} csd csd_all.txt
+compute cq primary constriction/size loose loose control_by area
 thermo_style custom step {cp}
 thermo_modify format float %.17g
 run 0
 thermo_style custom step {ca}
+thermo_modify format float %.17g
+run 0
+thermo_style custom step {cq}
 thermo_modify format float %.17g
 run 0
 """
@@ -77,7 +81,7 @@ def vectors(text):
     lines = text.splitlines()
     for i, l in enumerate(lines):
         m = l.split()
-        if len(m) > 1 and m[0] == "Step" and m[1] in ("cp[1]", "ca[1]"):
+        if len(m) > 1 and m[0] == "Step" and m[1] in ("cp[1]", "ca[1]", "cq[1]"):
             for n in lines[i + 1:i + 4]:
                 v = n.split()
                 if len(v) == NV + 1 and v[0].isdigit():
@@ -163,14 +167,15 @@ def main():
         write_data(os.path.join(work, "grains.data"), g)
         with open(os.path.join(work, "in.csd"), "w") as f:
             f.write(SCRIPT.format(psd=psd, cp=" ".join("c_cp[%d]" % i for i in range(1, NV + 1)),
-                                  ca=" ".join("c_ca[%d]" % i for i in range(1, NV + 1))))
+                                  ca=" ".join("c_ca[%d]" % i for i in range(1, NV + 1)),
+                                  cq=" ".join("c_cq[%d]" % i for i in range(1, NV + 1))))
         res = subprocess.run([a.launcher, "-in", "in.csd", "-log", "log.csd"], cwd=work,
                              capture_output=True, text=True, errors="replace")
         v = vectors(res.stdout)
-        if res.returncode != 0 or len(v) != 2:
+        if res.returncode != 0 or len(v) != 3:
             print("%s: the launcher failed:\n%s" % (name, res.stdout[-2000:]))
             continue
-        vp, va = v["cp"], v["ca"]
+        vp, va, vq = v["cp"], v["ca"], v["cq"]
         csd_p = load_csd(os.path.join(work, "csd_primary.txt"))
         csd_a = load_csd(os.path.join(work, "csd_all.txt"))
         with open(os.path.join(a.dest, "csd_%s.txt" % name), "w") as f:
@@ -189,6 +194,8 @@ def main():
             "percolation_primary_m": "%.5g" % vp["percolation"],
             "loose_finer_Dc35_percent": round(vp["loose_finer_control_percent"], 3),
             "loose_finer_percolation_percent": round(vp["loose_finer_percolation_percent"], 3),
+            "Dc35_area_primary_m": "%.5g" % vq["control"],
+            "loose_finer_Dc35_area_percent": round(vq["loose_finer_control_percent"], 3),
             "Dc35_all_m": "%.5g" % va["control"], "percolation_all_m": "%.5g" % va["percolation"],
             "kezdi_max_ratio": round(vp["kezdi_max_ratio"], 3),
             "kezdi": "stable" if vp["kezdi_max_ratio"] <= 4 else "unstable",
