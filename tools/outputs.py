@@ -23,9 +23,10 @@ fabric_intervals.txt, rest.txt, the series), read by position and named by
 the tables; LAMMPS text dumps (read_dump: dump custom and dump local,
 columns by the names of their own column line), final_contacts.txt
 (CONTACT_COLUMNS), compute constriction/size's csd file and local array,
-the outlet's file of fix massflow/mesh, and the lines of an input script
-that print the fix's vector. No tool or test reads a column of these
-files by its position anywhere else.
+the outlet's file of fix massflow/mesh, the lines of an input script
+that print the fix's vector, and LIGGGHTS' thermo output (read_thermo:
+each column by the keyword of the thermo_style line that printed it). No
+tool or test reads a column of these files by its position anywhere else.
 
 Standard library and numpy only; import it as `import outputs` with tools/
 on sys.path (the scene tests get it from --source).
@@ -595,3 +596,110 @@ def read_suffusion(path):
 def eroded_file(run, gradient_text):
     """The outlet file of one stage of the seepage test."""
     return os.path.join(run, "eroded_i%s.txt" % gradient_text)
+
+
+# ---- LIGGGHTS thermo output (the screen or the log) ------------------------
+
+# The header words LIGGGHTS prints for the thermo_style keywords that are not
+# a compute, fix or variable (LAMMPS' thermo.cpp); any other keyword prints
+# as itself.
+THERMO_BUILTIN_WORDS = {
+    "step": "Step", "elapsed": "Elapsed", "elaplong": "Elaplong", "dt": "Dt",
+    "time": "Time", "cpu": "CPU", "tpcpu": "T/CPU", "spcpu": "S/CPU",
+    "cpuremain": "CPULeft", "part": "Part", "atoms": "Atoms", "temp": "Temp",
+    "press": "Press", "pe": "PotEng", "ke": "KinEng", "etotal": "TotEng",
+    "enthalpy": "Enthalpy", "evdwl": "E_vdwl", "ecoul": "E_coul",
+    "epair": "E_pair", "ebond": "E_bond", "eangle": "E_angle",
+    "edihed": "E_dihed", "eimp": "E_impro", "emol": "E_mol", "elong": "E_long",
+    "etail": "E_tail", "vol": "Volume", "density": "Density",
+}
+# LIGGGHTS cuts every header word to this many characters
+THERMO_WORD_CHARS = 8
+
+
+def thermo_keywords(columns):
+    """The keywords of a thermo_style custom command: `columns` is the
+    script's line ('thermo_style custom step atoms f_flow[1] ...'), the
+    keywords as one string ('step atoms f_flow[1]') or a list of them.
+    ValueError unless it is a custom style whose first keyword is step."""
+    words = columns.split("#", 1)[0].split() if isinstance(columns, str) else list(columns)
+    if words[:1] == ["thermo_style"]:
+        if words[1:2] != ["custom"]:
+            raise ValueError("thermo_style %s: only a custom style lists its keywords"
+                             % " ".join(words[1:2]))
+        words = words[2:]
+    if words[:1] != ["step"]:
+        raise ValueError("thermo keywords %s: the first must be step (the header line "
+                         "starts with Step)" % words)
+    return words
+
+
+def thermo_word(keyword):
+    """The header word LIGGGHTS prints for a thermo_style keyword: c_ID[I],
+    f_ID[I] and v_NAME without their prefix, the others by their LAMMPS
+    names (ke: KinEng), all cut to THERMO_WORD_CHARS characters
+    ('f_seep_now[1]': 'seep_now', 'v_sigma_lid': 'sigma_li')."""
+    if keyword[:2] in ("c_", "f_", "v_"):
+        word = keyword[2:]
+    else:
+        word = THERMO_BUILTIN_WORDS.get(keyword, keyword)
+    return word[:THERMO_WORD_CHARS]
+
+
+def _thermo_numbers(words, n):
+    """The floats of a thermo row of n columns (the step an integer), or
+    None. nan and inf are numbers here: a test of finiteness needs them."""
+    if len(words) != n or not re.match(r"^\d+$", words[0]):
+        return None
+    try:
+        return [float(w) for w in words]
+    except ValueError:
+        return None
+
+
+def read_thermo(text, columns, runs=False):
+    """The thermo rows of a LIGGGHTS screen output or log `text` printed
+    by the thermo_style custom of `columns` (thermo_keywords: the script's
+    line or its keywords), each a dict {keyword: float}, e.g.
+    row["f_flow[3]"], row["c_pf[4]"], row["step"]: every run's block in
+    order (runs=True: a list per block).
+
+    The names are the script's keywords, not the header's words: LIGGGHTS
+    prints c_ID[I], f_ID[I] and v_NAME without the prefix and cut to 8
+    characters, so 'f_seep_now[1]' and 'f_seep_now[2]' both print as
+    'seep_now', 'v_sigma_lid' as 'sigma_li' and 'c_pf[4]' as 'pf[4]',
+    whatever thermo_modify format says; a header word cannot name a column,
+    the keyword the script gave can, and it is what a test and the pages
+    write. The header serves to find the blocks: a block is a line whose
+    words are those the keywords print as (thermo_word), in order; so the
+    rows of another thermo_style (other keywords, or as many others) are
+    never read under these names. Its rows are the lines of as many numbers
+    (the first an integer step) up to 'Loop time', the next header or an
+    ERROR; lines between (a WARNING) are skipped, and a run cut short keeps
+    the rows it printed. thermo_modify line one only (the default)."""
+    keys = thermo_keywords(columns)
+    head = [thermo_word(k).lower() for k in keys]
+    blocks, rows = [], None
+    for line in text.splitlines():
+        words = line.split()
+        if words[:1] == ["Step"]:
+            rows = [] if [w.lower() for w in words] == head else None
+            if rows is not None:
+                blocks.append(rows)
+        elif rows is not None:
+            if line.startswith("Loop time") or line.startswith("ERROR"):
+                rows = None
+                continue
+            numbers = _thermo_numbers(words, len(keys))
+            if numbers is not None:
+                rows.append(dict(zip(keys, numbers)))
+    return blocks if runs else [r for b in blocks for r in b]
+
+
+def thermo_row(text, columns, step):
+    """The first row of read_thermo(text, columns) at `step` (the first run
+    that prints it), or None."""
+    for row in read_thermo(text, columns):
+        if row["step"] == step:
+            return row
+    return None

@@ -10,7 +10,10 @@ fabric_intervals.txt and rest.txt as written; final.dump (dump custom) and
 final_contacts.txt (dump local) cut to their first 6 and 5 rows (the count
 line set to match); csd_all.txt of compute constriction/size cut to every
 600th row (its comment still counts the whole file's 2542); left.txt.0/.1
-of fix massflow/mesh on two ranks.
+of fix massflow/mesh on two ranks; thermo.out, lines of the screen of
+test_seepage's scene (its loading, the specimen at rest, the seepage
+stage's two runs), each thermo block with the thermo_style line that
+printed it.
 
 Each reader must give, by name, the value the file holds in that column
 (literals below, copied from the files), and must refuse a file whose
@@ -163,6 +166,59 @@ def check_scene_files(chk, work, source):
               and iv["primary_percent_of_interval"][18] == 100)
 
 
+def check_thermo(chk):
+    with open(data("thermo.out")) as f:
+        text = f.read()
+    load, rest, vol, seep = [l for l in text.splitlines() if l.startswith("thermo_style")]
+    chk.check("thermo_word: prefix dropped, cut to 8 characters, LAMMPS' names",
+              [outputs.thermo_word(k) for k in ("f_seep_now[1]", "v_sigma_lid", "c_pf[1][8]",
+                                                "ke", "atoms", "c_pf[4]")]
+              == ["seep_now", "sigma_li", "pf[1][8]", "KinEng", "Atoms", "pf[4]"])
+    rows = outputs.read_thermo(text, load)
+    chk.check("thermo.out, the loading: 2 rows (steps 0, 4000) by the script's keywords, "
+              "the LOADED line in the block skipped (%s)" % [r["step"] for r in rows],
+              [r["step"] for r in rows] == [0, 4000]
+              and rows[1]["v_sigma_lid"] == 100770.8 and rows[1]["v_sigma_avg"] == 100422.98
+              and rows[1]["v_primary_pct"] == 50.458306 and rows[1]["f_qs"] == 0.01132015
+              and rows[0]["v_contacts"] == 5.3698663 and rows[0]["cpu"] == 0, rows)
+    runs = outputs.read_thermo(text, load, runs=True)
+    chk.check("runs=True: one list per run (2 runs of 1 row)", [len(b) for b in runs] == [1, 1])
+    r = outputs.read_thermo(text, rest)
+    chk.check("thermo.out, at rest: c_pf[4] 46.165812 at step 10500",
+              len(r) == 1 and r[0]["step"] == 10500 and r[0]["c_pf[4]"] == 46.165812
+              and r[0]["c_pf[5]"] == 0.50405922, r)
+    v = outputs.read_thermo(text, vol)
+    chk.check("thermo.out: c_vol_loose0 (header 'vol_loos') by its keyword",
+              len(v) == 1 and v[0]["atoms"] == 4188 and v[0]["c_vol_loose0"] == 5.0653322e-08
+              and v[0]["c_vol_sum"] == 9.4091365e-08, v)
+    s = outputs.read_thermo(text, seep, runs=True)
+    chk.check("thermo.out, the seepage stage: 2 runs of 2 rows; f_seep_now[1] and [2], both "
+              "printed as 'seep_now', apart by the keywords",
+              [len(b) for b in s] == [2, 2] and s[0][0]["f_seep_now[1]"] == -4.4408921e-14
+              and s[0][0]["f_seep_now[2]"] == -2.220446e-14
+              and s[1][1]["v_sigma_top"] == 99986.11 and s[1][1]["step"] == 12500, s)
+    first = outputs.thermo_row(text, seep, 11500)
+    chk.check("thermo_row: the first run that prints step 11500 (cpu 2.9050204); "
+              "None for a step not printed",
+              first is not None and first["cpu"] == 2.9050204
+              and outputs.thermo_row(text, seep, 7) is None, first)
+    chk.check("another style of as many columns, or the keywords in another order, "
+              "reads no row",
+              outputs.read_thermo(text, "step atoms c_vol_sum c_other") == []
+              and outputs.read_thermo(text, "step atoms c_vol_loose0 c_vol_sum") == [])
+    cut = text[:text.rindex("   12500 ")]
+    chk.check("a run cut short (no Loop time) keeps the rows it printed (3 of 4)",
+              len(outputs.read_thermo(cut, seep)) == 3)
+    nan = text.replace("99986.11", "-nan")
+    got = outputs.read_thermo(nan, seep)[-1]["v_sigma_top"]
+    chk.check("a non-finite value is read as such (nan), for a test of finiteness",
+              got != got, got)
+    chk.check("thermo_keywords: not custom, or not from step, is a ValueError",
+              raises(outputs.thermo_keywords, "thermo_style one")
+              and raises(outputs.thermo_keywords, "atoms step")
+              and outputs.thermo_keywords(seep + " # note") == seep.split()[2:])
+
+
 def main():
     args = su.parse_args(__doc__)
     work = su.fresh_dir(args.work)
@@ -172,6 +228,7 @@ def main():
     check_contacts(chk, work)
     check_constriction_and_outlet(chk, work)
     check_scene_files(chk, work, args.source)
+    check_thermo(chk)
     chk.finish()
 
 
