@@ -395,27 +395,26 @@ FabricSums accumulate(const std::vector<Particle>& particles,
   return sums;
 }
 
-FabricSummary finalise(const FabricSums& sums,
-                       const std::vector<double>& interval_diameters,
-                       double oz_tolerance) {
-  if (!(oz_tolerance >= 0.0 && oz_tolerance < 1.0))
-    fail("oz_tolerance must lie in [0, 1), got " + std::to_string(oz_tolerance));
-  const int m = sums.intervals();
-  if (!interval_diameters.empty()) {
-    if (static_cast<int>(interval_diameters.size()) != m)
-      fail("got " + std::to_string(interval_diameters.size()) +
-           " interval diameters for " + std::to_string(m) + " intervals");
-    // The overlapping zone is found by interval order, which must be size order.
-    if (!std::is_sorted(interval_diameters.begin(), interval_diameters.end()))
-      fail("interval diameters must be given finest first");
-  }
+namespace {
 
+void check_interval_diameters(const std::vector<double>& interval_diameters,
+                              int intervals) {
+  if (interval_diameters.empty()) return;
+  if (static_cast<int>(interval_diameters.size()) != intervals)
+    fail("got " + std::to_string(interval_diameters.size()) +
+         " interval diameters for " + std::to_string(intervals) + " intervals");
+  // The overlapping zone is found by interval order, which must be size order.
+  if (!std::is_sorted(interval_diameters.begin(), interval_diameters.end()))
+    fail("interval diameters must be given finest first");
+}
+
+// The counts, mass shares and coordination numbers of the whole specimen
+// (Figs. 11-12); returns the total mass, which the interval rows divide by.
+double summarise_particles(const FabricSums& sums, FabricSummary& s) {
   using I = FabricSums::Interval;
-  using C = FabricSums::Contact;
-  FabricSummary s;
   double primary_particles = 0, primary_mass = 0, mass = 0;
   double loaded_contacts_on_particles = 0, loaded_contacts_on_primary = 0;
-  for (int k = 0; k < m; ++k) {
+  for (int k = 0; k < sums.intervals(); ++k) {
     s.particles += sums.at(k, I::particles);
     primary_particles += sums.at(k, I::primary_particles);
     primary_mass += sums.at(k, I::primary_mass);
@@ -429,6 +428,12 @@ FabricSummary finalise(const FabricSums& sums,
   s.coordination = ratio(loaded_contacts_on_particles, s.particles);
   s.primary_coordination =
       ratio(loaded_contacts_on_primary, primary_particles);
+  return mass;
+}
+
+// The contact counts, mean forces, fabric tensors and their anisotropies.
+void summarise_contacts(const FabricSums& sums, FabricSummary& s) {
+  using C = FabricSums::Contact;
   s.contacts = sums[C::contacts];
   s.loaded_particle_contacts = sums[C::loaded_particle_contacts];
   s.loaded_wall_contacts = sums[C::loaded_wall_contacts];
@@ -442,26 +447,39 @@ FabricSummary finalise(const FabricSums& sums,
     s.force_fabric_tensor = sums.force_dyads() / sums[C::fabric_normal_force];
   s.fabric_anisotropy = fabric_anisotropy(s.fabric_tensor);
   s.force_anisotropy = force_anisotropy(s.fabric_tensor, s.force_fabric_tensor);
+}
 
-  s.intervals.resize(m);
-  OverlappingZone& oz = s.overlapping_zone;
-  OverlappingZone& tz = s.overlapping_zone_tolerant;
-  for (int k = 0; k < m; ++k) {
-    IntervalSummary& row = s.intervals[k];
+// Interval k's row (Figs. 13-14, 17-19), with the caller's diameter if given.
+IntervalSummary summarise_interval(const FabricSums& sums, int k,
+                                   const std::vector<double>& interval_diameters,
+                                   double mass) {
+  using I = FabricSums::Interval;
+  IntervalSummary row;
+  const double n = sums.at(k, I::particles);
+  const double pm = sums.at(k, I::primary_mass);
+  const double lm = sums.at(k, I::loose_mass);
+  row.particles = n;
+  row.measured_diameter = ratio(sums.at(k, I::diameter), n);
+  row.diameter =
+      interval_diameters.empty() ? row.measured_diameter : interval_diameters[k];
+  row.mass_percent = 100.0 * ratio(pm + lm, mass);
+  row.primary_mass_percent = 100.0 * ratio(pm, mass);
+  row.loose_mass_percent = 100.0 * ratio(lm, mass);
+  row.primary_percent_of_interval = 100.0 * ratio(pm, pm + lm);
+  row.loaded_contacts_per_particle = ratio(sums.at(k, I::loaded_contacts), n);
+  row.normal_force_per_loaded_contact = ratio(
+      sums.at(k, I::loaded_normal_force), sums.at(k, I::loaded_contacts));
+  return row;
+}
+
+// Finds the bounds of both overlapping zones (see OverlappingZone).
+void find_zone_bounds(const FabricSums& sums, double oz_tolerance,
+                      OverlappingZone& oz, OverlappingZone& tz) {
+  using I = FabricSums::Interval;
+  for (int k = 0; k < sums.intervals(); ++k) {
     const double n = sums.at(k, I::particles);
     const double pm = sums.at(k, I::primary_mass);
     const double lm = sums.at(k, I::loose_mass);
-    row.particles = n;
-    row.measured_diameter = ratio(sums.at(k, I::diameter), n);
-    row.diameter =
-        interval_diameters.empty() ? row.measured_diameter : interval_diameters[k];
-    row.mass_percent = 100.0 * ratio(pm + lm, mass);
-    row.primary_mass_percent = 100.0 * ratio(pm, mass);
-    row.loose_mass_percent = 100.0 * ratio(lm, mass);
-    row.primary_percent_of_interval = 100.0 * ratio(pm, pm + lm);
-    row.loaded_contacts_per_particle = ratio(sums.at(k, I::loaded_contacts), n);
-    row.normal_force_per_loaded_contact = ratio(
-        sums.at(k, I::loaded_normal_force), sums.at(k, I::loaded_contacts));
     // Particle counts, not masses, decide the bounds: they are exact integers.
     if (sums.at(k, I::primary_particles) > 0.0 && oz.lower_interval < 0)
       oz.lower_interval = k;
@@ -472,19 +490,25 @@ FabricSummary finalise(const FabricSums& sums,
       tz.lower_interval = k;
     if (lm > oz_tolerance * (pm + lm) && lm > 0.0) tz.upper_interval = k;
   }
-  for (OverlappingZone* z : {&oz, &tz}) {
-    if (z->lower_interval >= 0) z->r1 = s.intervals[z->lower_interval].diameter;
-    if (z->upper_interval >= 0) z->r2 = s.intervals[z->upper_interval].diameter;
-    if (z->lower_interval >= 0 && z->upper_interval >= z->lower_interval)
-      for (int k = z->lower_interval; k <= z->upper_interval; ++k)
-        z->mass_percent += s.intervals[k].mass_percent;
-  }
+}
 
+// r1, r2 and the mass of a zone whose bounds are known.
+void measure_zone(const std::vector<IntervalSummary>& intervals,
+                  OverlappingZone& z) {
+  if (z.lower_interval >= 0) z.r1 = intervals[z.lower_interval].diameter;
+  if (z.upper_interval >= 0) z.r2 = intervals[z.upper_interval].diameter;
+  if (z.lower_interval >= 0 && z.upper_interval >= z.lower_interval)
+    for (int k = z.lower_interval; k <= z.upper_interval; ++k)
+      z.mass_percent += intervals[k].mass_percent;
+}
+
+std::vector<DirectionBin> summarise_directions(const FabricSums& sums) {
+  using C = FabricSums::Contact;
   using D = FabricSums::Direction;
   const int bins = sums.direction_bins();
-  s.directions.resize(bins);
+  std::vector<DirectionBin> directions(bins);
   for (int b = 0; b < bins; ++b) {
-    DirectionBin& d = s.directions[b];
+    DirectionBin& d = directions[b];
     d.theta_lo = 90.0 * b / bins;
     d.theta_hi = 90.0 * (b + 1) / bins;
     d.contacts = sums.at(b, D::contacts);
@@ -494,6 +518,30 @@ FabricSummary finalise(const FabricSums& sums,
     d.density_vs_isotropic = ratio(d.contact_fraction, solid_angle_share);
     d.mean_normal_force = ratio(sums.at(b, D::normal_force), d.contacts);
   }
+  return directions;
+}
+
+}  // namespace
+
+FabricSummary finalise(const FabricSums& sums,
+                       const std::vector<double>& interval_diameters,
+                       double oz_tolerance) {
+  if (!(oz_tolerance >= 0.0 && oz_tolerance < 1.0))
+    fail("oz_tolerance must lie in [0, 1), got " + std::to_string(oz_tolerance));
+  const int m = sums.intervals();
+  check_interval_diameters(interval_diameters, m);
+
+  FabricSummary s;
+  const double mass = summarise_particles(sums, s);
+  summarise_contacts(sums, s);
+  s.intervals.resize(m);
+  for (int k = 0; k < m; ++k)
+    s.intervals[k] = summarise_interval(sums, k, interval_diameters, mass);
+  find_zone_bounds(sums, oz_tolerance, s.overlapping_zone,
+                   s.overlapping_zone_tolerant);
+  measure_zone(s.intervals, s.overlapping_zone);
+  measure_zone(s.intervals, s.overlapping_zone_tolerant);
+  s.directions = summarise_directions(sums);
   return s;
 }
 
