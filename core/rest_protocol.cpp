@@ -90,7 +90,28 @@ RestDecision RestProtocol::stop(long step, RestPhase phase, std::string line) {
   return d;
 }
 
+// The end of a block of loading (docs/fix_servo_rest.md, items 1, 3 and 4):
+// the block's means, then the first decision that applies.
 RestDecision RestProtocol::end_of_block(long step, const RestMeasures& m) {
+  const double steady = close_block(m.primary);
+  const long n_load = step - start_;
+  // a servo that swings: off the target by more than swing_rms and spread
+  // about its block mean by more than swing_sd, two blocks running
+  swings_ = (n_load >= rule_.swing_from && block_rms_ > rule_.swing_rms &&
+             block_sd_ > rule_.swing_sd)
+                ? swings_ + 1
+                : 0;
+  if (swings_ >= 2) return servo_swings(n_load, m);
+  const bool on_target = block_rms_ < rule_.stress_tol && m.t_load >= rule_.ramp;
+  if (rule_.rest_tol == 0 && on_target && m.ke < rule_.ke_limit && steady < rule_.pf_tol)
+    return rest_by_energy(step, m, steady);
+  if (rule_.rest_tol > 0 && on_target && m.ratio < rule_.load_tol)
+    return hand_over(step, m);
+  if (m.t_load >= rule_.t_max) return loading_time_out(step, m, steady);
+  return {};
+}
+
+double RestProtocol::close_block(double primary) {
   const double n = static_cast<double>(n_);
   block_mean_ = s_ / n;
   block_rms_ = std::sqrt(e2_ / n);
@@ -98,80 +119,79 @@ RestDecision RestProtocol::end_of_block(long step, const RestMeasures& m) {
   n_ = 0;
   s_ = e_ = e2_ = 0.0;
   ++blocks_;
-  const long n_load = step - start_;
   p_[2] = p_[1];
   p_[1] = p_[0];
-  p_[0] = m.primary;
-  const double steady = std::fabs(p_[0] - p_[1]) + std::fabs(p_[1] - p_[2]);
+  p_[0] = primary;
+  return std::fabs(p_[0] - p_[1]) + std::fabs(p_[1] - p_[2]);
+}
 
-  // a servo that swings: off the target by more than swing_rms and spread
-  // about its block mean by more than swing_sd, two blocks running
-  swings_ = (n_load >= rule_.swing_from && block_rms_ > rule_.swing_rms &&
-             block_sd_ > rule_.swing_sd)
-                ? swings_ + 1
-                : 0;
-  if (swings_ >= 2) {
-    RestDecision d;
-    d.swing = true;
-    d.line = "the lid servo swings: over the last block (step " + num(n_load) +
-             " of the loading) the lid stress averaged " + num(block_mean_) +
-             " Pa against the target " + num(m.target) + " Pa, off it by " +
-             num(block_rms_) + " (rms) and spread by " + num(block_sd_) +
-             " about its mean, as fractions of the target, two blocks running";
-    return d;
-  }
-  const bool on_target = block_rms_ < rule_.stress_tol && m.t_load >= rule_.ramp;
-  const std::string lid = "lid stress " + num(block_mean_) + " Pa";
-  if (rule_.rest_tol == 0 && on_target && m.ke < rule_.ke_limit && steady < rule_.pf_tol) {
-    rest_stress_ = block_mean_;
-    return stop(step, RestPhase::rest,
-                "STOP: at rest after " + num(n_load) + " steps (t = " + num(m.t_load) +
-                    " s): unbalanced-force ratio " + num(m.ratio) +
-                    " (rest_tol 0), kinetic energy " + num(m.ke) + " J (limit " +
-                    num(rule_.ke_limit) + " J), " + lid + " (rms error " +
-                    num(block_rms_) + ", tolerance " + num(rule_.stress_tol) +
-                    "), primary fabric moved " + num(steady) +
-                    " points over the last two blocks (tolerance " + num(rule_.pf_tol) + ")");
-  }
-  if (rule_.rest_tol > 0 && on_target && m.ratio < rule_.load_tol) {
-    phase_ = RestPhase::relaxing;
-    relax_start_ = step;
-    RestDecision d;
-    d.lid = LidAction::hold;
-    d.zero = rule_.relax_zero;
-    d.line = "LOADED: " + lid + " over the last block (rms error " + num(block_rms_) +
-             ") after " + num(n_load) + " steps (t = " + num(m.t_load) +
-             " s), unbalanced-force ratio " + num(m.ratio) + " (load_tol " +
-             num(rule_.load_tol) + "): " +
-             (rule_.lid_held ? "the lid is held and the grains relaxed "
-                             : "the grains relaxed under the servo ") +
-             "(velocities zeroed every " + num(long(rule_.relax_zero)) +
-             " steps) until the ratio is below rest_tol " + num(rule_.rest_tol);
-    return d;
-  }
-  if (m.t_load >= rule_.t_max) {
-    rest_stress_ = block_mean_;
-    const std::string moved =
-        p_[2] < 0 ? "primary fabric steadiness not known yet: it needs three "
-                    "blocks of loading (tolerance " + num(rule_.pf_tol) + " points)"
-                  : "primary fabric moved " + num(steady) +
-                        " points over the last two blocks (tolerance " +
-                        num(rule_.pf_tol) + ")";
-    RestDecision d = stop(
-        step, RestPhase::time_limit,
-        "STOP: maximum time " + num(rule_.t_max) + " s reached after " + num(n_load) +
-            " steps, not at rest: unbalanced-force ratio " + num(m.ratio) +
-            ", kinetic energy " + num(m.ke) + " J" +
-            (rule_.ke_limit > 0 ? " (limit " + num(rule_.ke_limit) + " J)" : std::string()) +
-            ", " + lid + " (rms error " + num(block_rms_) + ", tolerance " +
-            num(rule_.stress_tol) + "), " + moved);
-    d.warning = "WARNING: not at rest at t_max " + num(rule_.t_max) + " s (stress " +
-                num(m.target) +
-                " Pa): the numbers below are of grains still moving; raise t_max "
-                "(a lower stress takes longer), see docs/user_guide.md";
-    return d;
-  }
-  return {};
+std::string RestProtocol::lid_stress() const {
+  return "lid stress " + num(block_mean_) + " Pa";
+}
+
+RestDecision RestProtocol::servo_swings(long n_load, const RestMeasures& m) const {
+  RestDecision d;
+  d.swing = true;
+  d.line = "the lid servo swings: over the last block (step " + num(n_load) +
+           " of the loading) the lid stress averaged " + num(block_mean_) +
+           " Pa against the target " + num(m.target) + " Pa, off it by " +
+           num(block_rms_) + " (rms) and spread by " + num(block_sd_) +
+           " about its mean, as fractions of the target, two blocks running";
+  return d;
+}
+
+RestDecision RestProtocol::rest_by_energy(long step, const RestMeasures& m,
+                                          double steady) {
+  rest_stress_ = block_mean_;
+  return stop(step, RestPhase::rest,
+              "STOP: at rest after " + num(step - start_) + " steps (t = " + num(m.t_load) +
+                  " s): unbalanced-force ratio " + num(m.ratio) +
+                  " (rest_tol 0), kinetic energy " + num(m.ke) + " J (limit " +
+                  num(rule_.ke_limit) + " J), " + lid_stress() + " (rms error " +
+                  num(block_rms_) + ", tolerance " + num(rule_.stress_tol) +
+                  "), primary fabric moved " + num(steady) +
+                  " points over the last two blocks (tolerance " + num(rule_.pf_tol) + ")");
+}
+
+RestDecision RestProtocol::hand_over(long step, const RestMeasures& m) {
+  phase_ = RestPhase::relaxing;
+  relax_start_ = step;
+  RestDecision d;
+  d.lid = LidAction::hold;
+  d.zero = rule_.relax_zero;
+  d.line = "LOADED: " + lid_stress() + " over the last block (rms error " +
+           num(block_rms_) + ") after " + num(step - start_) + " steps (t = " +
+           num(m.t_load) + " s), unbalanced-force ratio " + num(m.ratio) +
+           " (load_tol " + num(rule_.load_tol) + "): " +
+           (rule_.lid_held ? "the lid is held and the grains relaxed "
+                           : "the grains relaxed under the servo ") +
+           "(velocities zeroed every " + num(long(rule_.relax_zero)) +
+           " steps) until the ratio is below rest_tol " + num(rule_.rest_tol);
+  return d;
+}
+
+RestDecision RestProtocol::loading_time_out(long step, const RestMeasures& m,
+                                            double steady) {
+  rest_stress_ = block_mean_;
+  const std::string moved =
+      p_[2] < 0 ? "primary fabric steadiness not known yet: it needs three "
+                  "blocks of loading (tolerance " + num(rule_.pf_tol) + " points)"
+                : "primary fabric moved " + num(steady) +
+                      " points over the last two blocks (tolerance " +
+                      num(rule_.pf_tol) + ")";
+  RestDecision d = stop(
+      step, RestPhase::time_limit,
+      "STOP: maximum time " + num(rule_.t_max) + " s reached after " + num(step - start_) +
+          " steps, not at rest: unbalanced-force ratio " + num(m.ratio) +
+          ", kinetic energy " + num(m.ke) + " J" +
+          (rule_.ke_limit > 0 ? " (limit " + num(rule_.ke_limit) + " J)" : std::string()) +
+          ", " + lid_stress() + " (rms error " + num(block_rms_) + ", tolerance " +
+          num(rule_.stress_tol) + "), " + moved);
+  d.warning = "WARNING: not at rest at t_max " + num(rule_.t_max) + " s (stress " +
+              num(m.target) +
+              " Pa): the numbers below are of grains still moving; raise t_max "
+              "(a lower stress takes longer), see docs/user_guide.md";
+  return d;
 }
 
 RestDecision RestProtocol::relax_check(long step, const RestMeasures& m) {

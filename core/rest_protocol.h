@@ -107,6 +107,15 @@ class RestProtocol {
 
  private:
   RestDecision end_of_block(long step, const RestMeasures& m);
+  // the block's stress means from its sums, which start again; the new
+  // primary fraction kept: returns how far it moved over the last two blocks
+  double close_block(double primary);
+  std::string lid_stress() const;  // the last block's, for the lines
+  // the decisions at the end of a block of loading
+  RestDecision servo_swings(long n_load, const RestMeasures& m) const;
+  RestDecision rest_by_energy(long step, const RestMeasures& m, double steady);
+  RestDecision hand_over(long step, const RestMeasures& m);
+  RestDecision loading_time_out(long step, const RestMeasures& m, double steady);
   RestDecision relax_check(long step, const RestMeasures& m);
   RestDecision stop(long step, RestPhase phase, std::string line);
 
