@@ -21,6 +21,53 @@ using namespace FixConst;
 
 namespace {
 constexpr int kStateSize = 13;  // RestProtocol::state()
+
+double positive(const StyleArgs &args, int i, const char *what) {
+  const double x = args.number(i, what);
+  args.require(x > 0, i, "must be positive");
+  return x;
+}
+
+// A keyword of the protocol's rule at args[i] (docs/fix_servo_rest.md).
+void read_rule_keyword(const StyleArgs &args, int i, fabric::RestRule &rule) {
+  const std::string kw = args[i];
+  if (kw == "every") {
+    rule.block = args.integer_in(i, 1, 1000000000, "steps of a block of loading");
+  } else if (kw == "check") {
+    rule.check = args.integer_in(i, 1, 1000000000, "steps between the relaxation's checks");
+  } else if (kw == "stress_tol") {
+    rule.stress_tol = positive(args, i, "the rms relative stress error of rest");
+  } else if (kw == "load_tol") {
+    rule.load_tol = positive(args, i, "the unbalanced-force ratio at which the servo hands over");
+  } else if (kw == "rest_tol") {
+    rule.rest_tol = args.number(i, "the unbalanced-force ratio of rest, or 0");
+    args.require(rule.rest_tol >= 0, i,
+                 "must be a positive unbalanced-force ratio (rest by force "
+                 "balance), or 0 for the kinetic-energy rule");
+  } else if (kw == "pf_tol") {
+    rule.pf_tol = positive(args, i, "the primary fraction's steadiness (points)");
+  } else if (kw == "t_max") {
+    rule.t_max = positive(args, i, "the maximum loading time (s)");
+  } else if (kw == "ramp") {
+    rule.ramp = args.number(i, "a loading time (s)");
+    args.require(rule.ramp >= 0, i, "must be 0 or a loading time (s)");
+  } else if (kw == "relax_max") {
+    rule.relax_max = args.integer_in(i, 1, 2000000000, "steps of relaxation");
+  } else if (kw == "reload_max") {
+    rule.reload_max = static_cast<int>(args.integer_in(i, 0, 1000000, "reloads"));
+  } else if (kw == "lid") {
+    rule.lid_held = args.choice(i, {"servo", "held"}) == 1;
+  } else if (kw == "reload_early") {
+    rule.reload_early = args.yes_no(i);
+  } else if (kw == "relax_zero") {
+    rule.relax_zero = static_cast<int>(
+        args.integer_in(i, 0, 1000000000, "0: none; N: velocities zeroed every N steps"));
+  } else if (kw == "swing_from") {
+    rule.swing_from = args.integer_in(i, 0, 2000000000, "steps of loading");
+  } else {
+    args.unknown_keyword(i);
+  }
+}
 }  // namespace
 
 FixServoRest::FixServoRest(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {
@@ -30,66 +77,40 @@ FixServoRest::FixServoRest(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
                       "then the keywords stress and area");
   lid_id_ = arg[3];
   qs_id_ = arg[4];
-  StyleArgs args(error, "Fix servo/rest", narg - 5, arg + 5,
+  read_keywords(narg - 5, arg + 5);
+  protocol_.reset(new fabric::RestProtocol(rule_, update->ntimestep));
+  vector_flag = 1;
+  size_vector = fabric::kRestEntries;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+}
+
+// The keywords after the two fix IDs: the target and the wall here, the
+// protocol's rule in read_rule_keyword; then what the keywords need together.
+void FixServoRest::read_keywords(int narg, char **arg) {
+  StyleArgs args(error, "Fix servo/rest", narg, arg,
                  {"stress", "area", "every", "check", "stress_tol", "load_tol",
                   "rest_tol", "ke_vrms", "pf_tol", "t_max", "ramp", "relax_max",
                   "reload_max", "reload_early", "relax_zero", "swing_from", "lid"});
   bool have_stress = false;
   for (int i = 0; i < args.size(); i += 2) {
     const std::string kw = args[i];
-    const auto positive = [&](const char *what) {
-      const double x = args.number(i, what);
-      args.require(x > 0, i, "must be positive");
-      return x;
-    };
     if (kw == "stress") {
       const char *v = args.value(i, "the target stress of the wall (Pa), a "
                                     "number or v_name of an equal-style variable");
       if (strncmp(v, "v_", 2) == 0) {
         stress_var_ = v + 2;
       } else {
-        stress_ = positive("the target stress (Pa)");
+        stress_ = positive(args, i, "the target stress (Pa)");
       }
       have_stress = true;
     } else if (kw == "area") {
-      area_ = positive("the wall's area (m^2), over which its force is a stress");
-    } else if (kw == "every") {
-      rule_.block = args.integer_in(i, 1, 1000000000, "steps of a block of loading");
-    } else if (kw == "check") {
-      rule_.check = args.integer_in(i, 1, 1000000000, "steps between the relaxation's checks");
-    } else if (kw == "stress_tol") {
-      rule_.stress_tol = positive("the rms relative stress error of rest");
-    } else if (kw == "load_tol") {
-      rule_.load_tol = positive("the unbalanced-force ratio at which the servo hands over");
-    } else if (kw == "rest_tol") {
-      rule_.rest_tol = args.number(i, "the unbalanced-force ratio of rest, or 0");
-      args.require(rule_.rest_tol >= 0, i,
-                   "must be a positive unbalanced-force ratio (rest by force "
-                   "balance), or 0 for the kinetic-energy rule");
+      area_ = positive(args, i, "the wall's area (m^2), over which its force is a stress");
     } else if (kw == "ke_vrms") {
-      ke_vrms_ = positive("the grains' rms speed of rest (m/s)");
-    } else if (kw == "pf_tol") {
-      rule_.pf_tol = positive("the primary fraction's steadiness (points)");
-    } else if (kw == "t_max") {
-      rule_.t_max = positive("the maximum loading time (s)");
-    } else if (kw == "ramp") {
-      rule_.ramp = args.number(i, "a loading time (s)");
-      args.require(rule_.ramp >= 0, i, "must be 0 or a loading time (s)");
-    } else if (kw == "relax_max") {
-      rule_.relax_max = args.integer_in(i, 1, 2000000000, "steps of relaxation");
-    } else if (kw == "reload_max") {
-      rule_.reload_max = static_cast<int>(args.integer_in(i, 0, 1000000, "reloads"));
-    } else if (kw == "lid") {
-      rule_.lid_held = args.choice(i, {"servo", "held"}) == 1;
-    } else if (kw == "reload_early") {
-      rule_.reload_early = args.yes_no(i);
-    } else if (kw == "relax_zero") {
-      rule_.relax_zero = static_cast<int>(
-          args.integer_in(i, 0, 1000000000, "0: none; N: velocities zeroed every N steps"));
-    } else if (kw == "swing_from") {
-      rule_.swing_from = args.integer_in(i, 0, 2000000000, "steps of loading");
+      ke_vrms_ = positive(args, i, "the grains' rms speed of rest (m/s)");
     } else {
-      args.unknown_keyword(i);
+      read_rule_keyword(args, i, rule_);
     }
   }
   if (!have_stress || area_ <= 0)
@@ -100,12 +121,6 @@ FixServoRest::FixServoRest(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, a
                       "needs ke_vrms, the grains' rms speed of rest (m/s)");
   const std::string why = fabric::check_rule(rule_);
   if (!why.empty()) error->all(FLERR, ("Fix servo/rest: " + why).c_str());
-  protocol_.reset(new fabric::RestProtocol(rule_, update->ntimestep));
-  vector_flag = 1;
-  size_vector = fabric::kRestEntries;
-  global_freq = 1;
-  extvector = 0;
-  restart_global = 1;
 }
 
 int FixServoRest::setmask() { return END_OF_STEP; }

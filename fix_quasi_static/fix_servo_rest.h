@@ -37,6 +37,7 @@ class FixServoRest : public Fix {
   void restart(char *);
 
  private:
+  void read_keywords(int narg, char **arg);
   void find_fixes();
   double target_stress();
   double lid_stress();
