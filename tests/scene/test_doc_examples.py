@@ -52,8 +52,18 @@ def main():
     root = su.fresh_dir(os.path.join(args.work, "doc_examples"))
     os.symlink(os.path.join(args.source, "input_scripts"),
                os.path.join(root, "input_scripts"))
+    out, natoms = check_complete_script(args, chk, root)
+    check_one_line_fix(args, chk, root, blocks[0])
+    if os.path.isfile(os.path.join(out, "packed.restart")):
+        check_read_restart(args, chk, root, blocks[1], natoms)
+    compute_examples(args, chk, root)
+    check_output_table(args, chk, page)
+    chk.finish()
 
-    # 1. the complete script, as written
+
+def check_complete_script(args, chk, root):
+    """1. The complete script, as written: its output folder and the atom
+    count of its dump (None without one)."""
     inp = os.path.join(args.source, "examples", "in.sequential_pack")
     res = su.run_launcher(args, inp, log=os.path.join(root, "example1.log"),
                           cwd=root, timeout=300)
@@ -72,8 +82,11 @@ def main():
               and abs(float(m.group(2)) - 0.35) < 0.005)
     chk.check("example 1 writes its restart file",
               os.path.isfile(os.path.join(out, "packed.restart")))
+    return out, natoms
 
-    # 2. the one-line fix in the setting its sentence names
+
+def check_one_line_fix(args, chk, root, example):
+    """2. The one-line fix in the setting its sentence names."""
     d2 = su.fresh_dir(os.path.join(root, "example2"))
     shutil.copy(os.path.join(args.source, "input_scripts", "psd", "cu2.5.txt"),
                 os.path.join(d2, "soil.txt"))
@@ -83,7 +96,7 @@ def main():
              "region          container block 0 0.007 0 0.007 0 0.007 units box\n"
              "group           soil region container\n"
              "neighbor        1e-4 bin\n")
-    text += blocks[0] + "\n" + su.MATERIALS
+    text += example + "\n" + su.MATERIALS
     text += ("run             0\n"
              "variable        n2 equal count(soil)\n"
              "print           \"SOIL ${n2}\"\n")
@@ -98,27 +111,25 @@ def main():
               "arrangement layerwise, start centre" in res.text
               and "40 equal-mass intervals" in res.text, res.text[-2000:])
 
-    # 3. the read_restart lines, after example 1
-    if os.path.isfile(os.path.join(out, "packed.restart")):
-        lines = blocks[1].splitlines()
-        text = "atom_modify     map array\n" + lines[0] + "\n"
-        text += "newton          off\ncommunicate     single vel yes\n"
-        text += "\n".join(lines[1:]) + "\n" + su.MATERIALS
-        text += "run             1\n"
-        inp = su.write_file(os.path.join(root, "in.example3"), text)
-        res = su.run_launcher(args, inp, cwd=root, timeout=300)
-        chk.check("example 3 runs (%.1f s)" % res.seconds,
-                  res.returncode == 0 and not res.errors(), res.describe())
-        counts = re.findall(r"Loop time of \S+ on \d+ procs for \d+ steps "
-                            r"with (\d+) atoms", res.text)
-        chk.check("example 3 does not pack again (atoms %s, example 1 %s)"
-                  % (counts, natoms),
-                  "packing the container full" not in res.text
-                  and counts and natoms is not None
-                  and int(counts[-1]) == natoms)
-    compute_examples(args, chk, root)
-    check_output_table(args, chk, page)
-    chk.finish()
+
+def check_read_restart(args, chk, root, example, natoms):
+    """3. The read_restart lines, after example 1 (its `natoms` atoms)."""
+    lines = example.splitlines()
+    text = "atom_modify     map array\n" + lines[0] + "\n"
+    text += "newton          off\ncommunicate     single vel yes\n"
+    text += "\n".join(lines[1:]) + "\n" + su.MATERIALS
+    text += "run             1\n"
+    inp = su.write_file(os.path.join(root, "in.example3"), text)
+    res = su.run_launcher(args, inp, cwd=root, timeout=300)
+    chk.check("example 3 runs (%.1f s)" % res.seconds,
+              res.returncode == 0 and not res.errors(), res.describe())
+    counts = re.findall(r"Loop time of \S+ on \d+ procs for \d+ steps "
+                        r"with (\d+) atoms", res.text)
+    chk.check("example 3 does not pack again (atoms %s, example 1 %s)"
+              % (counts, natoms),
+              "packing the container full" not in res.text
+              and counts and natoms is not None
+              and int(counts[-1]) == natoms)
 
 
 def check_output_table(args, chk, page):
