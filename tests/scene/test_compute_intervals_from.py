@@ -19,6 +19,21 @@ import scene_util as su
 
 EDGE = 4e-3
 
+# the thermo keywords of compute pf's outputs read here, by the names of
+# fabric_outputs.h: particles (global vector), and an interval's particles
+# and diameter (global array, row = interval)
+_ARRAY = su.outputs.index(su.outputs.fabric_array())
+PARTICLES = "c_pf[%d]" % (su.outputs.index(su.outputs.fabric_vector())["particles"] + 1)
+
+
+def in_interval(interval, name):
+    return "c_pf[%d][%d]" % (interval, _ARRAY[name] + 1)
+
+
+THERMO = "thermo_style    custom step atoms %s %s %s %s" % (
+    PARTICLES, in_interval(1, "particles"), in_interval(2, "particles"),
+    in_interval(1, "diameter"))
+
 
 def scene(args, compute, extra_atom_diameter=None):
     psd = os.path.join(su.DATA_DIR, "psd_ok_small.txt")
@@ -42,7 +57,7 @@ def scene(args, compute, extra_atom_diameter=None):
         text += su.block_region("far", (0, 0, 1.3 * EDGE), (EDGE, EDGE, 2 * EDGE))
         text += "set             region far diameter %s density 2650\n" % extra_atom_diameter
     text += compute + "\n"
-    text += ("thermo_style    custom step atoms c_pf[1] c_pf[1][8] c_pf[2][8] c_pf[1][1]\n"
+    text += (THERMO + "\n"
              "dump            d all custom 1 %s id radius f_pack c_pf[3]\n"
              "dump_modify     d sort id\n"
              "run             0\n" % os.path.join(args.work, "intervals.dump"))
@@ -87,13 +102,15 @@ def main():
             chk.check("the foreign atom (f_pack 0) is placed by its diameter into interval 2",
                       (~packed).sum() == 1 and (interval[~packed] == 2).all(),
                       list(zip(fix_index, interval)))
-        rows = [l.split() for l in res.output.splitlines()]
-        vals = [r for r in rows if len(r) == 6 and r[0] == "0" and r[1] == str(s.natoms)]
+        rows = [r for r in su.outputs.read_thermo(res.output, THERMO) if r["step"] == 0]
+        row = rows[-1] if rows else None
         chk.check("%s: particles 1, interval 1 holds 0 and interval 2 all of them, "
                   "interval 1's diameter 0" % what,
-                  vals and float(vals[-1][2]) == s.natoms and float(vals[-1][3]) == 0
-                  and float(vals[-1][4]) == s.natoms and float(vals[-1][5]) == 0,
-                  res.describe())
+                  row is not None and row["atoms"] == s.natoms and row[PARTICLES] == s.natoms
+                  and row[in_interval(1, "particles")] == 0
+                  and row[in_interval(2, "particles")] == s.natoms
+                  and row[in_interval(1, "diameter")] == 0,
+                  row or res.describe())
 
     res = run(args, "foreign_misfit", scene(args, "compute pf all primary/fabric intervals_from pack intervals 2",
                                             "1.5e-3"))
@@ -102,7 +119,7 @@ def main():
               err and "fit no size interval of the particles of fix pack (intervals_from)" in err[0],
               "\n".join(err) or res.describe())
     res = run(args, "too_few", scene(args, "compute pf all primary/fabric intervals_from pack intervals 1")
-              .replace("c_pf[1] c_pf[1][8] c_pf[2][8] c_pf[1][1]", "c_pf[1]"))
+              .replace(THERMO, "thermo_style    custom step atoms " + PARTICLES))
     err = res.errors()
     chk.check("intervals 1 for a fix of 2 intervals: ERROR naming the stored index",
               err and "index 2" in err[0] and "intervals N" in err[0],

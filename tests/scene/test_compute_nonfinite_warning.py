@@ -12,10 +12,17 @@ without a word. Checked:
     is classified as before: particles 3, none loose (each overlaps a
     neighbour by 0.02 mm and min_contacts is 1), the thermo line finite).
 """
+import math
 import os
-import re
 
 import scene_util as su
+
+# the thermo keywords of compute pf's global vector printed, by the names of
+# fabric_outputs.h
+_AT = su.outputs.index(su.outputs.fabric_vector())
+PF = {name: "c_pf[%d]" % (_AT[name] + 1)
+      for name in ("particles", "loose_particles", "contacts", "mean_normal_force")}
+THERMO = "thermo_style custom step " + " ".join(PF.values())
 
 SCENE = """\
 {preamble}region box block -0.01 0.01 -0.01 0.01 -0.001 0.008 units box
@@ -36,7 +43,7 @@ set atom * diameter 0.002 density 2650
 compute pf all primary/fabric intervals 1 min_contacts 1
 fix nve all nve/sphere
 timestep 1e-8
-thermo_style custom step c_pf[1] c_pf[2] c_pf[10] c_pf[12]
+{thermo}
 run 0
 run 2
 print "RUN COMPLETED"
@@ -51,7 +58,7 @@ def main():
     for name, dup in (("duplicate", DUPLICATE), ("clean", "")):
         d = su.fresh_dir(os.path.join(args.work, name))
         inp = su.write_file(os.path.join(d, "in.scene"), SCENE.format(
-            preamble=su.preamble(), duplicate=dup))
+            preamble=su.preamble(), duplicate=dup, thermo=THERMO))
         res = su.run_launcher(args, inp)
         chk.check("%s: runs to the end (%.1f s)" % (name, res.seconds),
                   res.returncode == 0 and not res.errors() and not
@@ -70,12 +77,11 @@ def main():
         else:
             chk.check("%s: no non-finite warning" % name, not warnings,
                       "\n".join(warnings))
-            rows = re.findall(r"^\s+0\s+(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s*$",
-                              res.output, re.M)
+            row = su.outputs.thermo_row(res.output, THERMO, 0)
             chk.check("%s: step 0 thermo: 3 particles, none loose, finite values (%s)"
-                      % (name, rows[:1]), rows and float(rows[0][0]) == 3
-                      and float(rows[0][1]) == 0
-                      and "nan" not in " ".join(rows[0]).lower(),
+                      % (name, row), row is not None and row[PF["particles"]] == 3
+                      and row[PF["loose_particles"]] == 0
+                      and all(math.isfinite(v) for v in row.values()),
                       res.describe())
     chk.finish()
 

@@ -40,6 +40,9 @@ THERMO = "thermo_style    custom step atoms f_flow[1] f_flow[2] f_flow[3] f_flow
 # force x, y, z (f_ID[1..3], docs/fix_pore_flow.md)
 GRAIN = ["id", "x", "y", "z", "radius"]
 FLOW_FORCE = ["f_flow[1]", "f_flow[2]", "f_flow[3]"]
+# what measured()'s compute fsum sums (c_fsum[1..6]): the grains' forces
+# (pair and fluid), then the fix's per-atom fluid force
+SUMMED = ["fx", "fy", "fz"] + FLOW_FORCE
 
 
 def page_blocks(args):
@@ -58,49 +61,54 @@ def fix_line(scene):
     return [l for l in scene.splitlines() if l.startswith("fix             flow ")][0]
 
 
-def thermo_rows(text):
-    """{step: numbers} of the thermo lines (numbers only)."""
-    rows = {}
-    for line in text.splitlines():
-        w = line.split()
-        if len(w) > 1 and w[0].isdigit():
-            try:
-                rows[int(w[0])] = [float(x) for x in w[1:]]
-            except ValueError:
-                pass
-    return rows
+def thermo_line(scene):
+    """The scene's thermo_style line: the keywords its thermo rows are read by."""
+    return [l for l in scene.splitlines() if l.startswith("thermo_style")][0]
 
 
-def measured(scene, dump, extra_fix=""):
+def flow_entries(row, source):
+    """{entry name: value} of the fix's vector entries f_flow[I] that a
+    thermo row (outputs.read_thermo) holds, named by pore_flow_outputs.h."""
+    return {e.name: row["f_flow[%d]" % e.position] for e in su.outputs.pore_flow_vector(source)
+            if "f_flow[%d]" % e.position in row}
+
+
+def measured_thermo(source):
+    """measured()'s thermo_style line: the whole vector, then c_fsum[1..6]."""
+    n = len(su.outputs.pore_flow_vector(source))
+    return ("thermo_style    custom step %s %s"
+            % (" ".join("f_flow[%d]" % i for i in range(1, n + 1)),
+               " ".join("c_fsum[%d]" % i for i in range(1, len(SUMMED) + 1))))
+
+
+def measured(scene, dump, source, extra_fix=""):
     """The scene with the whole vector, the sums of the forces and a
     full-precision dump of the grains and their fluid forces."""
-    n = len(su.outputs.pore_flow_vector())
     line = fix_line(scene)
     out = scene.replace(line, line + extra_fix)
     out = out.replace(THERMO, (
-        "compute         fsum all reduce sum fx fy fz f_flow[1] f_flow[2] f_flow[3]\n"
-        "thermo_style    custom step %s c_fsum[1] c_fsum[2] c_fsum[3] c_fsum[4] c_fsum[5] c_fsum[6]\n"
+        "compute         fsum all reduce sum %s\n%s\n"
         "thermo_modify   format float %%.17g\n"
         "dump            d all custom 1 %s id x y z radius f_flow[1] f_flow[2] f_flow[3]\n"
         "dump_modify     d sort id format \"%%d %%.17g %%.17g %%.17g %%.17g %%.17g %%.17g %%.17g\""
-        % (" ".join("f_flow[%d]" % i for i in range(1, n + 1)), dump)))
+        % (" ".join(SUMMED), measured_thermo(source), dump)))
     return out
 
 
 def run_measured(args, chk, root, scene, name, nprocs=None, extra_fix=""):
-    """(vector by name, [sum fx fy fz, sum f_flow 1..3], the dump's
-    snapshot: columns by name, outputs.Snapshot) or None."""
+    """(vector by name, the sums of SUMMED by name: fx fy fz f_flow[1..3],
+    the dump's snapshot: columns by name, outputs.Snapshot) or None."""
     dump = os.path.join(root, name + ".dump")
-    inp = su.write_file(os.path.join(root, name + ".in"), measured(scene, dump, extra_fix))
+    inp = su.write_file(os.path.join(root, name + ".in"),
+                        measured(scene, dump, args.source, extra_fix))
     res = su.run_launcher(args, inp, nprocs=nprocs, cwd=root)
-    row = thermo_rows(res.text).get(0)
-    names = [e.name for e in su.outputs.pore_flow_vector(args.source)]
+    row = su.outputs.thermo_row(res.text, measured_thermo(args.source), 0)
     if not chk.check("%s runs and prints the vector" % name,
                      res.returncode == 0 and not res.errors() and row is not None
                      and os.path.isfile(dump), res.describe()):
         return None
-    vec = dict(zip(names, row[:len(names)]))
-    return vec, row[len(names):], su.outputs.last_snapshot(dump)
+    sums = {q: row["c_fsum[%d]" % k] for k, q in enumerate(SUMMED, 1)}
+    return flow_entries(row, args.source), sums, su.outputs.last_snapshot(dump)
 
 
 def rel(a, b):
@@ -115,10 +123,10 @@ def check_balance(chk, vec, sums, grains, what, axis, area):
     chk.check("%s: fluid force %.9g N = dp A = %.9g N within 1 %% (%.2g)"
               % (what, vec["fluid_force"], want, rel(vec["fluid_force"], want)),
               rel(vec["fluid_force"], want) < 0.01)
-    chk.check("%s: the grains' forces (%.12g) and f_flow[%d] (%.12g) sum to the fix's total"
-              % (what, sums[axis], axis + 1, sums[3 + axis]),
-              rel(sums[axis], vec["fluid_force"]) < 1e-6
-              and rel(sums[3 + axis], vec["fluid_force"]) < 1e-9)
+    grain, flow = sums["f" + "xyz"[axis]], sums[FLOW_FORCE[axis]]
+    chk.check("%s: the grains' forces (%.12g) and %s (%.12g) sum to the fix's total"
+              % (what, grain, FLOW_FORCE[axis], flow),
+              rel(grain, vec["fluid_force"]) < 1e-6 and rel(flow, vec["fluid_force"]) < 1e-9)
     chk.check("%s: the dump's per-grain forces sum to the total too" % what,
               rel(grains[FLOW_FORCE[axis]].sum(), vec["fluid_force"]) < 1e-9)
 
@@ -135,8 +143,9 @@ def check_reversed(args, chk, root, scene, one):
     chk.check("direction -z: inflow %.12g, permeability %.12g, fluid force %.9g N as along z"
               % (vec["inflow"], vec["permeability"], vec["fluid_force"]), same)
     chk.check("direction -z: the grains' forces sum to %.9g N along z, minus the total %.9g N"
-              % (sums[2], vec["fluid_force"]),
-              rel(-sums[2], vec["fluid_force"]) < 1e-6 and rel(-sums[5], vec["fluid_force"]) < 1e-9)
+              % (sums["fz"], vec["fluid_force"]),
+              rel(-sums["fz"], vec["fluid_force"]) < 1e-6
+              and rel(-sums[FLOW_FORCE[2]], vec["fluid_force"]) < 1e-9)
 
 
 def check_permeability(args, chk, root, vec, grains, side):
@@ -187,11 +196,14 @@ def check_ranks(args, chk, root, scene, one):
 
 def check_every(args, chk, root, scene):
     text = scene.replace(fix_line(scene), fix_line(scene).replace("every 100", "every 5"))
-    text = text.replace(THERMO, "thermo_style    custom step f_flow[8]\nthermo 1").replace(
+    solve_step = "f_flow[%d]" % (su.outputs.index(su.outputs.pore_flow_vector(args.source))
+                                 ["solve_step"] + 1)
+    thermo = "thermo_style    custom step %s" % solve_step
+    text = text.replace(THERMO, thermo + "\nthermo 1").replace(
         "run             0", "run             7")
     res = su.run_launcher(args, su.write_file(os.path.join(root, "every.in"), text), cwd=root)
-    rows = thermo_rows(res.text)
-    got = [rows.get(s, [None])[0] for s in range(8)]
+    rows = {r["step"]: r[solve_step] for r in su.outputs.read_thermo(res.text, thermo)}
+    got = [rows.get(s) for s in range(8)]
     chk.check("every 5 over 7 steps: the solve step reads 0 0 0 0 0 5 5 5 (%s)" % got,
               got == [0, 0, 0, 0, 0, 5, 5, 5], res.describe())
 
@@ -204,13 +216,17 @@ def check_page(args, chk, root, text, blocks, scene):
               not missing and "global vector of %d entries" % len(want) in text,
               "\n".join(missing))
     res = su.run_launcher(args, su.write_file(os.path.join(root, "page.in"), scene), cwd=root)
-    row = thermo_rows(res.text).get(0)
+    row = su.outputs.thermo_row(res.text, thermo_line(scene), 0)
+    v = flow_entries(row, args.source) if row else {}
+
+    def near(name, want, tol):
+        return name in v and abs(v[name] - want) < tol
     chk.check("examples/in.pore_flow prints 703 grains, inflow = outflow 9.627e-7 m^3/s, "
               "K 3.21e-10 m^2, force 0.0090 N, 3680 pores",
-              res.returncode == 0 and row is not None and row[0] == 703
-              and abs(row[1] - 9.627e-7) < 5e-11 and abs(row[2] - 9.627e-7) < 5e-11
-              and abs(row[3] - 3.21e-10) < 5e-13 and abs(row[4] - 0.009) < 5e-5
-              and row[5] == 3680, row or res.describe())
+              res.returncode == 0 and row is not None and row.get("atoms") == 703
+              and near("inflow", 9.627e-7, 5e-11) and near("outflow", 9.627e-7, 5e-11)
+              and near("permeability", 3.21e-10, 5e-13) and near("fluid_force", 0.009, 5e-5)
+              and v.get("pores") == 3680, row or res.describe())
     for i, line in enumerate(blocks[0].splitlines()):
         res = su.run_launcher(args, su.write_file(
             os.path.join(root, "page_line%d.in" % i), scene.replace(fix_line(scene), line)),
