@@ -7,7 +7,8 @@ fabric lies, layer by layer from the floor to the lid.
 Each argument is a run folder of tools/oedometer_study.py (its final.dump
 is read) or a dump file with the columns id, x, y, z, radius, mass and the
 classification c_pf[2] (1 primary, 0 loose) of compute primary/fabric, as
-input_scripts/in.oedometer writes them. The last snapshot is used.
+input_scripts/in.oedometer writes them. The last complete snapshot is
+used, its columns by the names of its column line (tools/outputs.py).
 
 Heights are counted from the lowest grain's bottom, in coarsest diameters
 d_N (twice the largest radius). A grain belongs to the layer of its centre.
@@ -52,26 +53,6 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import outputs  # noqa: E402  (the one reader of the scene's outputs)
-
-
-def last_snapshot(path):
-    """Columns of the last snapshot of a LAMMPS text dump, by name."""
-    with open(path) as f:
-        lines = f.readlines()
-    starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
-    if not starts:
-        raise ValueError("not a LAMMPS text dump (no 'ITEM: TIMESTEP' line)")
-    start = starts[-1]
-    if len(lines) < start + 9 or not lines[start + 8].startswith("ITEM: ATOMS"):
-        raise ValueError("the last snapshot is cut short (no 'ITEM: ATOMS' header)")
-    natoms = int(lines[start + 3])
-    names = lines[start + 8].split()[2:]
-    rows = np.loadtxt(lines[start + 9:start + 9 + natoms], ndmin=2)
-    if rows.shape != (natoms, len(names)):
-        raise ValueError("the last snapshot holds %d rows of %d columns, "
-                         "expected %d of %d" % (rows.shape[0], rows.shape[1],
-                                                natoms, len(names)))
-    return {n: rows[:, j] for j, n in enumerate(names)}
 
 
 def heights(cols):
@@ -215,7 +196,7 @@ def main():
             sys.exit("fabric_layers: no dump at %s (give a run folder with final.dump "
                      "or a dump file)" % dump)
         try:
-            cols = last_snapshot(dump)
+            cols = outputs.dump_last(dump)
             rows, top = layers(cols)
             if args.slices:
                 gpath = os.path.join(os.path.dirname(dump), "fabric_global.txt")

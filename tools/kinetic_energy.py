@@ -13,9 +13,10 @@ a run's final.dump, or a checkpoint written out by
     write_dump      all custom ke.dump id type x y z radius mass vx vy vz
 
 (in a script with the scene's atom_style granular, atom_modify map array,
-communicate single vel yes and newton off). The last snapshot is read. The
-translational kinetic energy 1/2 m v^2 is what the scene's stop compares
-with its limit 1/2 M ke_vrms^2; it is split exactly into the energy of each
+communicate single vel yes and newton off). The last complete snapshot is
+read, its columns by name (tools/outputs.py). The translational kinetic
+energy 1/2 m v^2 is what the scene's stop compares with its limit
+1/2 M ke_vrms^2; it is split exactly into the energy of each
 slice's mass-weighted mean velocity and of the velocities about it. A
 specimen that creeps shows a mean upward speed falling from the lid (the
 floor of the container) to the fixed top wall.
@@ -27,8 +28,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from fabric_layers import last_snapshot  # noqa: E402
-import outputs  # noqa: E402
+import outputs  # noqa: E402  (the one reader of the scene's outputs)
 
 
 def split(cols, nslices):
@@ -61,7 +61,7 @@ def main():
     a = ap.parse_args()
     if a.slices < 1:
         sys.exit("--slices %d: use 1 or more" % a.slices)
-    cols = last_snapshot(a.dump)
+    cols = outputs.dump_last(a.dump)
     rows, total, creep, about = split(cols, a.slices)
     m = cols["mass"]
     print("%d grains, mass %.6g, kinetic energy %.4g J (rms speed %.3g m/s)"
