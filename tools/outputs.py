@@ -24,9 +24,11 @@ the tables; LAMMPS text dumps (read_dump: dump custom and dump local,
 columns by the names of their own column line), final_contacts.txt
 (CONTACT_COLUMNS), compute constriction/size's csd file and local array,
 the outlet's file of fix massflow/mesh, the lines of an input script
-that print the fix's vector, and LIGGGHTS' thermo output (read_thermo:
-each column by the keyword of the thermo_style line that printed it). No
-tool or test reads a column of these files by its position anywhere else.
+that print the fix's vector, LIGGGHTS' thermo output (read_thermo:
+each column by the keyword of the thermo_style line that printed it), and
+the files of bench/pore_flow_bench and bench/pore_flow_vs_yade/yade_flow.py
+(spheres, cells, forces). No tool or test reads a column of these files by
+its position anywhere else.
 
 Standard library and numpy only; import it as `import outputs` with tools/
 on sys.path (the scene tests get it from --source).
@@ -703,3 +705,62 @@ def thermo_row(text, columns, step):
         if row["step"] == step:
             return row
     return None
+
+
+# ---- the files of bench/pore_flow_bench (bench/pore_flow_bench.cpp) --------
+
+# These are a project program's outputs without a column line, so their
+# layouts are named here, from the program's writer: `export` writes a
+# spheres file (read back by `solve`, by bench/pore_flow_vs_yade/yade_flow.py
+# and written by tests/scene/test_pore_flow.py): the box on its first line,
+# then one sphere per line.
+BENCH_BOX_COLUMNS = ("xlo", "ylo", "zlo", "xhi", "yhi", "zhi")
+BENCH_SPHERE_COLUMNS = ("x", "y", "z", "radius")
+# `solve` writes CELLS, one row per cell of the triangulation in its order:
+# the centre, the pressure, the pore's kind (core/pore_flow.h PoreKind, as
+# an integer: BENCH_PORE_KINDS) and the pore's first cell (the row's own
+# index unless the cell was merged into another's pore) ...
+BENCH_CELL_COLUMNS = ("x", "y", "z", "pressure", "kind", "pore")
+BENCH_PORE_KINDS = ("unknown", "inflow", "outflow", "solid")
+# ... and FORCES, the fluid force on each sphere, in the spheres file's order.
+BENCH_FORCE_COLUMNS = ("fx", "fy", "fz")
+# yade_flow.py writes FlowEngine's cells as the centre and the pressure.
+YADE_CELL_COLUMNS = BENCH_CELL_COLUMNS[:4]
+
+
+def _number_rows(path, width):
+    """The rows of a file of numbers as an array of `width` columns;
+    ValueError naming the row that has another count."""
+    rows = data_rows(path)
+    for k, r in enumerate(rows):
+        if len(r) != width:
+            raise ValueError("%s: row %d holds %d numbers, the layout %d (tools/outputs.py)"
+                             % (path, k + 1, len(r), width))
+    return np.array(rows, dtype=float).reshape(len(rows), width)
+
+
+def read_bench_table(path, columns):
+    """A file of pore_flow_bench (or yade_flow.py) of the layout `columns`
+    (BENCH_CELL_COLUMNS, YADE_CELL_COLUMNS, BENCH_FORCE_COLUMNS) as {name:
+    numpy array}. The files have no column line, so the layout is checked
+    by its width: ValueError on a row of another count."""
+    a = _number_rows(path, len(columns))
+    return {name: a[:, j] for j, name in enumerate(columns)}
+
+
+def read_bench_spheres(path):
+    """A spheres file of pore_flow_bench: ({name of BENCH_BOX_COLUMNS: float},
+    {name of BENCH_SPHERE_COLUMNS: numpy array})."""
+    with open(path) as f:
+        lines = [l for l in f.read().splitlines() if l.strip()]
+    box = lines[0].split() if lines else []
+    if len(box) != len(BENCH_BOX_COLUMNS):
+        raise ValueError("%s: the first line is not the box (%s)"
+                         % (path, " ".join(BENCH_BOX_COLUMNS)))
+    rows = [l.split() for l in lines[1:]]
+    if any(len(r) != len(BENCH_SPHERE_COLUMNS) for r in rows):
+        raise ValueError("%s: a sphere row that is not %s"
+                         % (path, " ".join(BENCH_SPHERE_COLUMNS)))
+    a = np.array(rows, dtype=float).reshape(len(rows), len(BENCH_SPHERE_COLUMNS))
+    return (dict(zip(BENCH_BOX_COLUMNS, (float(v) for v in box))),
+            {name: a[:, j] for j, name in enumerate(BENCH_SPHERE_COLUMNS)})

@@ -18,6 +18,8 @@ from scipy.spatial import cKDTree
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import outputs  # noqa: E402  (the layouts of pore_flow_bench's and yade_flow.py's files)
 
 # (name, pore_flow_bench export arguments, length scales to run at)
 SPECIMENS = [
@@ -36,11 +38,15 @@ def run(cmd, env=None):
 
 
 def scaled(src, dst, k):
-    rows = np.loadtxt(src, skiprows=1)
-    box = np.loadtxt(src, max_rows=1)
+    box, spheres = outputs.read_bench_spheres(src)
     with open(dst, "w") as f:
-        f.write(" ".join(repr(v * k) for v in box) + "\n")
-        np.savetxt(f, rows * k, fmt="%.17g")
+        f.write(" ".join(repr(box[c] * k) for c in outputs.BENCH_BOX_COLUMNS) + "\n")
+        np.savetxt(f, np.column_stack([spheres[c] * k for c in outputs.BENCH_SPHERE_COLUMNS]),
+                   fmt="%.17g")
+
+
+def centres(cells):
+    return np.column_stack([cells["x"], cells["y"], cells["z"]])
 
 
 def field(text, key):
@@ -65,18 +71,19 @@ def yade(spheres, prefix, clamp):
 def pressures(prefix_ours, prefix_yade, size):
     """|p_yade - p_ours| / dp over the cells both have (centres within 1e-6
     of the box), the pores we solve for (not imposed, not merged)."""
-    a = np.loadtxt(prefix_ours + "_cells.txt")
-    b = np.loadtxt(prefix_yade + "_cells.txt")
-    own = a[(a[:, 4] == 0) & (a[:, 5] == np.arange(len(a)))]
-    dist, idx = cKDTree(b[:, :3]).query(own[:, :3])
+    a = outputs.read_bench_table(prefix_ours + "_cells.txt", outputs.BENCH_CELL_COLUMNS)
+    b = outputs.read_bench_table(prefix_yade + "_cells.txt", outputs.YADE_CELL_COLUMNS)
+    own = ((a["kind"] == outputs.BENCH_PORE_KINDS.index("unknown"))
+           & (a["pore"] == np.arange(len(a["pore"]))))
+    dist, idx = cKDTree(centres(b)).query(centres(a)[own])
     hit = dist < 1e-6 * size
-    d = np.abs(b[idx[hit], 3] - own[hit, 3]) / DP
+    d = np.abs(b["pressure"][idx[hit]] - a["pressure"][own][hit]) / DP
     return hit.mean(), np.median(d), np.percentile(d, 90), d.max()
 
 
 def force_z(prefix, area):
-    f = np.loadtxt(prefix + "_forces.txt")
-    return f[:, 2].sum() / (DP * area)
+    f = outputs.read_bench_table(prefix + "_forces.txt", outputs.BENCH_FORCE_COLUMNS)
+    return f["fz"].sum() / (DP * area)
 
 
 def main():
@@ -97,8 +104,9 @@ def main():
         for k in scales:
             sph = os.path.join(a.work, "%s_x%g.txt" % (name, k))
             scaled(base, sph, k)
-            box = np.loadtxt(sph, max_rows=1)
-            size, area = box[3] - box[0], (box[3] - box[0]) * (box[4] - box[1])
+            box, _ = outputs.read_bench_spheres(sph)
+            size = box["xhi"] - box["xlo"]
+            area = size * (box["yhi"] - box["ylo"])
             p_o, p_y = sph[:-4] + "_ours", sph[:-4] + "_yade"
             k_o = ours(a.bench, sph, p_o)
             k_y, _, _ = yade(sph, p_y, True)

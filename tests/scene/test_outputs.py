@@ -13,7 +13,10 @@ line set to match); csd_all.txt of compute constriction/size cut to every
 of fix massflow/mesh on two ranks; thermo.out, lines of the screen of
 test_seepage's scene (its loading, the specimen at rest, the seepage
 stage's two runs), each thermo block with the thermo_style line that
-printed it.
+printed it; the files of bench/pore_flow_bench on 66 equal spheres
+(`export 4 0.4 1`, then `solve` with 1 Pa and 1e-3 Pa s), cut to the box
+and 4 spheres, the first 5 cells and 4 forces, and the first 4 cells of
+bench/pore_flow_vs_yade/yade_flow.py on the same spheres.
 
 Each reader must give, by name, the value the file holds in that column
 (literals below, copied from the files), and must refuse a file whose
@@ -219,6 +222,35 @@ def check_thermo(chk):
               and outputs.thermo_keywords(seep + " # note") == seep.split()[2:])
 
 
+def check_bench(chk):
+    box, sph = outputs.read_bench_spheres(data("bench_spheres.txt"))
+    chk.check("bench_spheres.txt: the box and 4 spheres by name",
+              box["xlo"] == 0 and box["zhi"] == 0.004 and len(sph["x"]) == 4
+              and sph["z"][1] == 0.0035 and sph["y"][1] == 0.0005 and sph["radius"][3] == 0.0005,
+              (box, sph))
+    c = outputs.read_bench_table(data("bench_cells.txt"), outputs.BENCH_CELL_COLUMNS)
+    kinds = [outputs.BENCH_PORE_KINDS[int(k)] for k in c["kind"]]
+    chk.check("bench_cells.txt: 5 cells, pressure, kind and pore by name; the fourth "
+              "cell merged into the third's pore (%s)" % kinds,
+              len(c["x"]) == 5 and c["pressure"][0] == 0.971923767764 and c["z"][0] == 0.0005
+              and kinds == ["unknown", "inflow", "unknown", "unknown", "inflow"]
+              and list(c["pore"]) == [0, 1, 2, 2, 4], c)
+    f = outputs.read_bench_table(data("bench_forces.txt"), outputs.BENCH_FORCE_COLUMNS)
+    chk.check("bench_forces.txt: 4 forces by name",
+              len(f["fz"]) == 4 and f["fz"][1] == 3.14226084606e-07
+              and f["fx"][0] == -3.58995101761e-08, f)
+    y = outputs.read_bench_table(data("yade_cells.txt"), outputs.YADE_CELL_COLUMNS)
+    chk.check("yade_cells.txt: FlowEngine's centres and pressures by name",
+              len(y["x"]) == 4 and y["pressure"][0] == 0.32198384966
+              and y["y"][0] == 0.00187867901305 and y["pressure"][3] == 1, y)
+    chk.check("a file of another width is a ValueError (ours read as yade's, the "
+              "forces as cells), and so is a spheres file without its box",
+              raises(outputs.read_bench_table, data("bench_cells.txt"), outputs.YADE_CELL_COLUMNS)
+              and raises(outputs.read_bench_table, data("bench_forces.txt"),
+                         outputs.BENCH_CELL_COLUMNS)
+              and raises(outputs.read_bench_spheres, data("bench_cells.txt")))
+
+
 def main():
     args = su.parse_args(__doc__)
     work = su.fresh_dir(args.work)
@@ -229,6 +261,7 @@ def main():
     check_constriction_and_outlet(chk, work)
     check_scene_files(chk, work, args.source)
     check_thermo(chk)
+    check_bench(chk)
     chk.finish()
 
 
