@@ -76,17 +76,11 @@ def entry(name, source=su.outputs.ROOT):
 
 
 def thermo_values(output, fields):
-    """{field: value} of the last thermo row printed under a 'Step ...'
-    header of step and `fields` (the keywords of the scene's thermo_style,
-    in order), or None."""
-    values = None
-    lines = output.splitlines()
-    for k, l in enumerate(lines[:-1]):
-        if l.split()[:1] == ["Step"] and len(l.split()) == 1 + len(fields):
-            row = lines[k + 1].split()
-            if len(row) == 1 + len(fields):
-                values = dict(zip(fields, (float(t) for t in row[1:])))
-    return values
+    """{field: value} of the last thermo row of the thermo_style `step
+    fields` (the keywords of the scene's thermo_style, in order), read by
+    those keywords (outputs.read_thermo), or None."""
+    rows = su.outputs.read_thermo(output, ["step"] + list(fields))
+    return rows[-1] if rows else None
 
 
 def run_column(args, chk, name, compute, nprocs=None, processors="", free=FREE):

@@ -24,7 +24,6 @@ store_force_contact_stress storage (it stops with "Contact history overflow"
 or corrupts the heap); input_scripts/in.oedometer does the same.
 """
 import os
-import re
 
 import scene_util as su
 
@@ -54,6 +53,12 @@ dump_modify d sort id
 """
 
 FIELDS = ["c_%s[%d]" % (c, i) for c in ("pf", "pfa") for i in range(1, 15)]
+_AT = su.outputs.index(su.outputs.fabric_vector())
+
+
+def entry(compute, name):
+    """The thermo keyword of entry `name` (fabric_outputs.h) of a compute."""
+    return "c_%s[%d]" % (compute, _AT[name] + 1)
 
 WRITE = """\
 {preamble}region box block -0.02 0.02 -0.01 0.01 -0.001 0.004 units box
@@ -77,15 +82,8 @@ READ = """\
 
 
 def last_thermo(output):
-    rows = []
-    lines = output.splitlines()
-    for k, l in enumerate(lines):
-        if l.split()[:1] == ["Step"]:
-            for m in lines[k + 1:]:
-                t = m.split()
-                if len(t) != 1 + len(FIELDS) or not re.match(r"^\d+$", t[0]):
-                    break
-                rows.append([float(v) for v in t])
+    """The last thermo row of `step FIELDS`, by keyword, or None."""
+    rows = su.outputs.read_thermo(output, ["step"] + FIELDS)
     return rows[-1] if rows else None
 
 
@@ -107,7 +105,8 @@ def main():
     end_atoms = su.last_snapshot(dump_w)
     chk.check("end of run: every contact loaded under the relative threshold "
               "(6 of 6), all 3 spheres loose under absolute 250 N",
-              end and end[11] == 6 and end[14 + 2] == 3, end)
+              end and end[entry("pf", "loaded_contacts")] == 6
+              and end[entry("pfa", "loose_particles")] == 3, end)
 
     for nprocs, proc in ((None, ""), (2, "2 1 1")):
         ranks = nprocs or 1
@@ -123,8 +122,8 @@ def main():
             continue
         after = last_thermo(r2.output)
         diff = []
-        for k, name in enumerate(FIELDS):
-            a, b = end[1 + k], after[1 + k]
+        for name in FIELDS:
+            a, b = end[name], after[name]
             if abs(a - b) > 1e-9 * max(1.0, abs(a)):
                 diff.append("%s: end of run %r, after read_restart %r" % (name, a, b))
         chk.check("%d rank(s): global vector entries 1-14 of both computes "
