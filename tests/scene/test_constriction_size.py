@@ -79,24 +79,22 @@ def lattice_scene(processors=None):
     return text
 
 
+def vector_keywords(cid):
+    """The thermo keywords of thermo_vector(cid): step, c_ID[1..NV]."""
+    return ["step"] + ["c_%s[%d]" % (cid, i) for i in range(1, NV + 1)]
+
+
 def thermo_vector(cid):
-    return ("thermo_style custom step %s\nthermo_modify format float %%.17g\n"
-            % " ".join("c_%s[%d]" % (cid, i) for i in range(1, NV + 1)))
+    return ("thermo_style custom %s\nthermo_modify format float %%.17g\n"
+            % " ".join(vector_keywords(cid)))
 
 
 def last_thermo(text, cid):
-    """The vector of compute `cid` from the last thermo block that prints it."""
-    lines = text.splitlines()
-    out = None
-    for i, l in enumerate(lines):
-        if l.split()[:2] != ["Step", "%s[1]" % cid]:
-            continue
-        for m in lines[i + 1:i + 4]:   # a warning may come between
-            vals = m.split()
-            if len(vals) == NV + 1 and vals[0].isdigit():
-                out = [float(v) for v in vals[1:]]
-                break
-    return out
+    """The vector of compute `cid` (entry I at I-1, named by AT) from the
+    last thermo row that prints it, read by its keywords
+    (outputs.read_thermo), or None."""
+    rows = su.outputs.read_thermo(text, vector_keywords(cid))
+    return [rows[-1][k] for k in vector_keywords(cid)[1:]] if rows else None
 
 
 def local_radii(path, cid):
@@ -258,8 +256,8 @@ def doc_examples(args, chk):
                  if f.startswith("discs_")]
         chk.check("example 2 writes the discs (%s)" % snaps, len(snaps) == 1)
         # psd: both Wan & Fell models, probabilities that differ
-        cols = thermo_columns(res.text)
-        p57, p58 = (cols.get("csp[%d]" % (AT[n] + 1)) for n in
+        cols = thermo_columns(res.text, text)
+        p57, p58 = (cols.get("c_csp[%d]" % (AT[n] + 1)) for n in
                     ("wan_fell_probability", "wan_fell_sand_gravel_probability"))
         chk.check("example 2 prints both Wan & Fell probabilities of the psd "
                   "(%s, %s): in (0, 1), not equal" % (p57, p58),
@@ -267,15 +265,12 @@ def doc_examples(args, chk):
                   and 0 < p58 < 1 and p57 != p58, cols)
 
 
-def thermo_columns(text):
-    """{column: value} of the first row after the last thermo header."""
-    lines = text.splitlines()
-    out = {}
-    for i, l in enumerate(lines[:-1]):
-        head, vals = l.split(), lines[i + 1].split()
-        if head[:1] == ["Step"] and len(vals) == len(head) and vals[0].isdigit():
-            out = dict(zip(head, (float(v) for v in vals)))
-    return out
+def thermo_columns(text, script):
+    """{keyword: value} of the last thermo row printed by the last
+    thermo_style line of `script` (outputs.read_thermo), or {}."""
+    line = [l for l in script.splitlines() if l.startswith("thermo_style")][-1]
+    rows = su.outputs.read_thermo(text, line)
+    return rows[-1] if rows else {}
 
 
 def doc_table(args, chk):
