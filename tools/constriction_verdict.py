@@ -76,17 +76,21 @@ run 0
 """
 
 
+def keywords(cid):
+    """The thermo keywords of compute `cid`'s whole vector, c_ID[1..NV]."""
+    return ["c_%s[%d]" % (cid, e.position) for e in ENTRIES]
+
+
 def vectors(text):
+    """{compute ID: {entry name: value}} of the vectors of cp, ca and cq in
+    the launcher's output, each from the last row of its thermo_style, read
+    by its keywords (outputs.read_thermo); a compute without a row is left
+    out."""
     out = {}
-    lines = text.splitlines()
-    for i, l in enumerate(lines):
-        m = l.split()
-        if len(m) > 1 and m[0] == "Step" and m[1] in ("cp[1]", "ca[1]", "cq[1]"):
-            for n in lines[i + 1:i + 4]:
-                v = n.split()
-                if len(v) == NV + 1 and v[0].isdigit():
-                    out[m[1][:2]] = {e.name: float(x) for e, x in zip(ENTRIES, v[1:])}
-                    break
+    for cid in ("cp", "ca", "cq"):
+        rows = outputs.read_thermo(text, ["step"] + keywords(cid))
+        if rows:
+            out[cid] = {e.name: rows[-1]["c_%s[%d]" % (cid, e.position)] for e in ENTRIES}
     return out
 
 
@@ -166,9 +170,8 @@ def main():
         os.makedirs(work, exist_ok=True)
         write_data(os.path.join(work, "grains.data"), g)
         with open(os.path.join(work, "in.csd"), "w") as f:
-            f.write(SCRIPT.format(psd=psd, cp=" ".join("c_cp[%d]" % i for i in range(1, NV + 1)),
-                                  ca=" ".join("c_ca[%d]" % i for i in range(1, NV + 1)),
-                                  cq=" ".join("c_cq[%d]" % i for i in range(1, NV + 1))))
+            f.write(SCRIPT.format(psd=psd, cp=" ".join(keywords("cp")),
+                                  ca=" ".join(keywords("ca")), cq=" ".join(keywords("cq"))))
         res = subprocess.run([a.launcher, "-in", "in.csd", "-log", "log.csd"], cwd=work,
                              capture_output=True, text=True, errors="replace")
         v = vectors(res.stdout)
