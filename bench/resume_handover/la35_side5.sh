@@ -15,11 +15,6 @@ STUDY="/usr/bin/python3 tools/oedometer_study.py --sides 5 --soils cu3.5 --rules
 $STUDY --var ke_vrms=4e-4 --out "$OUT/whole" > "$OUT/whole.log" 2>&1 &
 $STUDY --var ke_vrms=4e-4 checkpoint=5 --out "$OUT/jobs" > "$OUT/jobs.log" 2>&1
 wait
-{
-  echo "case,step,ke_translation_J,lid_stress_block_mean_Pa,stress_error_block_rms,loose_number_pct,primary_mass_pct"
-  for k in whole jobs; do
-    grep -v '^#' "$OUT/$k/runs/LA_cu3.5_side5_seed1/fabric_series.txt" |
-      awk -v k=$k '{print k "," $1 "," $2 "," $3 "," $4 "," $5 "," $6}'
-  done
-} > "$OUT/la35_side5.csv"
+/usr/bin/python3 tools/series_csv.py whole="$OUT/whole/runs/LA_cu3.5_side5_seed1/fabric_series.txt" \
+    jobs="$OUT/jobs/runs/LA_cu3.5_side5_seed1/fabric_series.txt" > "$OUT/la35_side5.csv"
 tail -n 4 "$OUT/whole.log" "$OUT/jobs.log"

@@ -29,10 +29,6 @@ for k in restored zero; do
 done
 echo "without a checkpoint: 3 blocks"
 $LMP -in $S $ARGS -var out "$OUT/whole" -var checkpoint 3 > "$OUT/whole.log"
-{
-  echo "case,step,ke_translation_J,lid_stress_block_mean_Pa,stress_error_block_rms,loose_number_pct,primary_mass_pct"
-  for k in whole restored zero; do
-    grep -v '^#' "$OUT/$k/fabric_series.txt" | awk -v k=$k '$1 >= 4000 {print k "," $1 "," $2 "," $3 "," $4 "," $5 "," $6}'
-  done
-} > "$OUT/blocks.csv"
+/usr/bin/python3 tools/series_csv.py --from 4000 whole="$OUT/whole/fabric_series.txt" \
+    restored="$OUT/restored/fabric_series.txt" zero="$OUT/zero/fabric_series.txt" > "$OUT/blocks.csv"
 cat "$OUT/blocks.csv"
