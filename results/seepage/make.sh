@@ -1,0 +1,28 @@
+#!/bin/bash
+# Regenerates results/seepage from scratch: Cu 2.0, 2.5 and 3.0, both
+# rules, side 3.3, seed 1, at the scene's defaults, then the seepage test at
+# gradient 300 (-var gradients 300, the flow solved every 1,000 steps); the verdict of compute
+# constriction/size on the same specimens at rest; the eroded volume per
+# run, stage and size interval. Run from the repository root. About 2
+# core-hours (Cu 3.0 most of it).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+py=/usr/bin/python3
+$py tools/oedometer_study.py --sides 3.3 --soils cu2.0 cu2.5 cu3.0 --rules discrete layerwise \
+    --seeds 1 --jobs 2 --ranks 1 --var gradients=300 flow_every=1000 --out out/seepage
+cp out/seepage/study.csv results/seepage/study.csv
+$py tools/constriction_verdict.py --study out/seepage --dest results/seepage/verdict
+$py tools/suffusion_report.py out/seepage/runs/* --out results/seepage
+$py results/seepage/score.py results/seepage
+# how often the flow must be solved: DA Cu 2.0, one scene run per interval
+rm -f results/seepage/flow_every.csv
+echo "flow_every,steps,eroded_pct_of_specimen,eroded_pct_of_loose,grains_eroded,wall_s" > results/seepage/flow_every.csv
+for fe in 50 100 200 500 1000 2000; do
+  start=$(date +%s)
+  build/liggghts-fabric -in input_scripts/in.oedometer -var psd input_scripts/psd/cu2.0.txt -var side 3.3 \
+      -var gradients 300 -var flow_every $fe -var out out/seepage_fe$fe -log out/seepage_fe$fe.log \
+      | grep "^SEEPAGE: gradient" | head -1 > out/seepage_fe$fe.line
+  wall=$(( $(date +%s) - start ))
+  sed -E "s/.* for ([0-9]+) steps: eroded ([0-9.]+) % of the specimen, ([0-9.]+) % of its loose grains \(([0-9]+) grains.*/$fe,\1,\2,\3,\4,$wall/" \
+      out/seepage_fe$fe.line >> results/seepage/flow_every.csv
+done
