@@ -9,7 +9,7 @@ the servo loads until the lid stress is on target and the unbalanced-force
 ratio of fix quasi/static is below load_tol 0.01, then the lid is held and
 every velocity and spin zeroed every 100 steps until the ratio is below
 rest_tol 1e-3) a Cu 2.5 DA specimen at side 3.3, one rank, is a static
-packing: held another 10,000 steps (with the relaxation's zeroing, the
+packing: held another 20,000 steps (with the relaxation's zeroing, the
 hold's default) its lid stress must stay within 2 % (results/rest/force_balance).
 Held without the zeroing, or at zeta 0.6, such a specimen loses 7-42 %
 (results/rest/creep_diagnosis). A hold that let the lid move, dropped the lid
@@ -25,7 +25,7 @@ import re
 
 import scene_util as su
 
-HOLD = 10000
+HOLD = 20000
 EVERY = 500    # hold_series.txt: a row every relax_every steps
 
 
