@@ -26,3 +26,10 @@ for fe in 50 100 200 500 1000 2000; do
   sed -E "s/.* for ([0-9]+) steps: eroded ([0-9.]+) % of the specimen, ([0-9.]+) % of its loose grains \(([0-9]+) grains.*/$fe,\1,\2,\3,\4,$wall/" \
       out/seepage_fe$fe.line >> results/seepage/flow_every.csv
 done
+# 1 and 2 ranks: DA Cu 2.0 twice on 2 ranks (the 1-rank rows: the study's and the sweep's every 1,000)
+root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
+for k in 1 2; do
+  mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -var psd input_scripts/psd/cu2.0.txt \
+      -var side 3.3 -var gradients 300 -var out out/seepage_ranks2_$k -log out/seepage_ranks2_$k.log \
+      | grep -E "^(FABRIC|SEEPAGE: gradient)"
+done
