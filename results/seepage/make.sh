@@ -26,10 +26,25 @@ for fe in 50 100 200 500 1000 2000; do
   sed -E "s/.* for ([0-9]+) steps: eroded ([0-9.]+) % of the specimen, ([0-9.]+) % of its loose grains \(([0-9]+) grains.*/$fe,\1,\2,\3,\4,$wall/" \
       out/seepage_fe$fe.line >> results/seepage/flow_every.csv
 done
-# 1 and 2 ranks: DA Cu 2.0 twice on 2 ranks (the 1-rank rows: the study's and the sweep's every 1,000)
+# 1 and 2 ranks: DA Cu 2.0 twice on 2 ranks beside the study's run and the sweep's every 1,000
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 for k in 1 2; do
   mpirun $root -np 2 build/liggghts-fabric -in input_scripts/in.oedometer -var psd input_scripts/psd/cu2.0.txt \
-      -var side 3.3 -var gradients 300 -var out out/seepage_ranks2_$k -log out/seepage_ranks2_$k.log \
-      | grep -E "^(FABRIC|SEEPAGE: gradient)"
+      -var side 3.3 -var gradients 300 -var out out/seepage_ranks2_$k -log out/seepage_ranks2_$k.log > /dev/null
 done
+$py - <<'PY'
+import sys
+sys.path.insert(0, "tools")
+import outputs
+runs = [(1, "campaign (study.csv)", "out/seepage/runs/DA_cu2.0_side3.3_seed1"),
+        (1, "flow_every sweep", "out/seepage_fe1000"), (2, "first", "out/seepage_ranks2_1"),
+        (2, "second", "out/seepage_ranks2_2")]
+with open("results/seepage/ranks.csv", "w") as f:
+    f.write("ranks,run,primary_pct_at_rest,eroded_pct_of_specimen,eroded_pct_of_loose\n")
+    for ranks, name, run in runs:
+        g = outputs.read_global(run + "/fabric_global.txt")
+        pos = outputs.index(outputs.fabric_vector())
+        s = outputs.read_suffusion(run + "/suffusion.txt")
+        f.write("%d,%s,%.4f,%.3f,%.3f\n" % (ranks, name, g[pos["primary_percent_by_mass"]],
+                                             s["eroded_pct"][-1], s["eroded_loose_pct"][-1]))
+PY
