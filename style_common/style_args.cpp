@@ -71,7 +71,14 @@ long StyleArgs::integer_in(int i, long lo, long hi,
   const std::string range =
       hi == LONG_MAX ? "at least " + std::to_string(lo)
                      : std::to_string(lo) + ".." + std::to_string(hi);
-  const long v = integer(i, "an integer " + range);
+  // a non-integer names the range too: "slices '2.5' is not an integer in
+  // 1..1000"
+  const char *word = value(i, "an integer " + range);
+  char *end = nullptr;
+  const long v = strtol(word, &end, 10);
+  if (end == word || *end != '\0')
+    fail(std::string(arg_[i]) + " '" + word + "' is not an integer " +
+         (hi == LONG_MAX ? "(" + range + ")" : "in " + range));
   require(v >= lo && v <= hi, i,
           (hi == LONG_MAX ? "must be " : "must lie in ") + range +
               (note.empty() ? "" : " (" + note + ")"));
