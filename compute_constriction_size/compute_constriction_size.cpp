@@ -38,7 +38,7 @@ ComputeConstrictionSize::ComputeConstrictionSize(LAMMPS *lmp, int iarg,
                       "(sphere: radius, rmass)");
   parse(narg - iarg, arg + iarg);
   vector_flag = 1;
-  size_vector = fabric::kConstrictionVectorEntries;
+  size_vector = fabric::constriction_vector_size(nslices_);
   extvector = 0;
   local_flag = 1;
   size_local_rows = 0;
@@ -55,7 +55,8 @@ ComputeConstrictionSize::~ComputeConstrictionSize() {
 void ComputeConstrictionSize::parse(int narg, char **arg) {
   const StyleArgs args(error, "Compute constriction/size", narg, arg,
                        {"container", "wall_margin", "merge", "tolerance",
-                        "loose", "fabric", "control", "control_by", "psd", "csd"});
+                        "loose", "fabric", "control", "control_by", "psd", "csd",
+                        "slices"});
   for (int i = 0; i < args.size(); i += 2) {
     const std::string kw = args[i];
     if (kw == "container") {
@@ -90,6 +91,8 @@ void ComputeConstrictionSize::parse(int narg, char **arg) {
       read_criteria(args, i);
     } else if (kw == "csd") {
       csd_file_ = args.value(i, "a file name");
+    } else if (kw == "slices") {
+      nslices_ = static_cast<int>(args.integer_in(i, 1, 1000));
     } else {
       args.unknown_keyword(i);
     }
@@ -167,6 +170,7 @@ ComputeConstrictionSize::Grains ComputeConstrictionSize::gather() {
     } else {
       g.verdict.loose_diameter.push_back(2.0 * f[4]);
       g.verdict.loose_mass.push_back(f[5]);
+      g.verdict.loose_z.push_back(f[3]);
     }
   }
   return g;
@@ -200,6 +204,7 @@ void ComputeConstrictionSize::analyse() {
   if (comm->me == 0) {
     try {
       net = fabric::constriction_network(grains.skeleton, options_);
+      fill_vector(net, grains);
     } catch (const std::exception &e) {
       snprintf(message, sizeof message, "Compute constriction/size: %s",
                e.what());
@@ -207,7 +212,6 @@ void ComputeConstrictionSize::analyse() {
   }
   MPI_Bcast(message, sizeof message, MPI_CHAR, 0, world);
   if (message[0]) error->all(FLERR, message);
-  if (comm->me == 0) fill_vector(net, grains);
   grains = Grains();
   MPI_Bcast(vector, size_vector, MPI_DOUBLE, 0, world);
   fill_local(net);
@@ -216,8 +220,12 @@ void ComputeConstrictionSize::analyse() {
 
 void ComputeConstrictionSize::fill_vector(const fabric::ConstrictionNetwork &net,
                                           const Grains &g) {
+  std::vector<fabric::ConstrictionSlice> slices;
+  if (nslices_ > 0)
+    slices = fabric::constriction_slices(net, g.skeleton, g.verdict, nslices_,
+                                         control_percent_, control_weight_);
   const std::vector<double> v = fabric::constriction_vector(
-      net, control_percent_, control_weight_, g.verdict, criteria_);
+      net, control_percent_, control_weight_, g.verdict, criteria_, slices);
   std::copy(v.begin(), v.end(), vector);
   char m[512];
   if (net.hidden > 0) {

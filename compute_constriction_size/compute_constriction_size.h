@@ -56,6 +56,7 @@ class ComputeConstrictionSize : public Compute {
   fabric::GradingCriteria criteria_;  // of keyword psd (0 without)
   class Compute *fabric_ = nullptr;  // compute primary/fabric (keyword fabric)
   int loose_bit_ = 0;
+  int nslices_ = 0;  // height slices (keyword slices), 0 without
   double control_percent_ = 35.0;
   fabric::CsdWeight control_weight_ = fabric::CsdWeight::number;
   bigint analysed_step_ = -1;

@@ -196,7 +196,8 @@ FaceResult solve_face(const Face& f, const std::vector<Sphere>& s) {
   }
   r.normal = frame->normal;
   if (auto k = constriction(*frame, a.radius, b.radius, c.radius)) {
-    r.disc = ConstrictionDisc{k->centre, frame->normal, k->radius, false};
+    r.disc = ConstrictionDisc{k->centre, frame->normal, k->radius, false,
+                              r.centroid};
     return r;
   }
   // Eq. (2) has no circle inside the triangle: the narrowest passage of the
@@ -214,7 +215,7 @@ FaceResult solve_face(const Face& f, const std::vector<Sphere>& s) {
   }
   if (best > 0.0)
     r.disc = ConstrictionDisc{frame->to_global(centre.x(), centre.y(), 0.0),
-                              frame->normal, best, true};
+                              frame->normal, best, true, r.centroid};
   return r;
 }
 

@@ -53,6 +53,10 @@ struct ConstrictionDisc {
   // Eq. (2) has no circle inside the triangle (an obtuse face): the largest
   // empty circle centred on one of the face's edges instead.
   bool on_edge = false;
+  // Centroid of the face the circle lies in (of the face whose circle
+  // represents a coplanar opening): where compute constriction/size's
+  // keyword slices places the constriction.
+  Vec3 face_centroid = Vec3::Zero();
 };
 
 struct ConstrictionNetwork {

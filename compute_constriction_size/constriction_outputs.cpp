@@ -1,6 +1,13 @@
 // The global vector of compute constriction/size (constriction_outputs.h).
 #include "constriction_outputs.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "height_slices.h"
 #include "suffusion_criteria.h"
 
 namespace fabric {
@@ -19,11 +26,68 @@ GradingCriteria grading_criteria(const ParticleSizeDistribution& psd) {
   return c;
 }
 
-std::vector<double> constriction_vector(const ConstrictionNetwork& net,
-                                        double control_percent,
-                                        CsdWeight control_weight,
-                                        const VerdictGrains& grains,
-                                        const GradingCriteria& criteria) {
+std::vector<ConstrictionSlice> constriction_slices(
+    const ConstrictionNetwork& net, const std::vector<Sphere>& pore_forming,
+    const VerdictGrains& grains, int count, double control_percent,
+    CsdWeight control_weight) {
+  const auto fail = [](const std::string& m) {
+    throw std::invalid_argument("constriction/size: " + m);
+  };
+  if (count < 1) fail("slices must be >= 1, got " + std::to_string(count));
+  const std::size_t nloose = grains.loose_diameter.size();
+  if (grains.loose_mass.size() != nloose || grains.loose_z.size() != nloose)
+    fail("the loose grains have " + std::to_string(nloose) + " diameters, " +
+         std::to_string(grains.loose_mass.size()) + " masses and " +
+         std::to_string(grains.loose_z.size()) + " heights");
+  // The extent over the grains at a finite height (the others are in no
+  // slice).
+  HeightExtent e{std::numeric_limits<double>::infinity(),
+                 -std::numeric_limits<double>::infinity()};
+  const auto extend = [&e](double z, double r) {
+    if (!std::isfinite(z) || !std::isfinite(r)) return;
+    e.bottom = std::min(e.bottom, z - r);
+    e.top = std::max(e.top, z + r);
+  };
+  for (const Sphere& s : pore_forming) extend(s.centre.z(), s.radius);
+  for (std::size_t k = 0; k < nloose; ++k)
+    extend(grains.loose_z[k], 0.5 * grains.loose_diameter[k]);
+  if (!(e.top >= e.bottom)) fail("no grain at a finite height: no slices");
+  const HeightSlices slices(e, count);
+
+  std::vector<std::vector<ConstrictionDisc>> discs(count);
+  for (const ConstrictionDisc& d : net.discs) {
+    const int k = slices.of(d.face_centroid.z());
+    if (k >= 0) discs[k].push_back(d);
+  }
+  // the loose grains of each slice, in their given order (so that one slice
+  // sums them as constriction_vector does)
+  std::vector<std::vector<double>> diameter(count), mass(count);
+  for (std::size_t g = 0; g < nloose; ++g) {
+    const int k = slices.of(grains.loose_z[g]);
+    if (k < 0) continue;
+    diameter[k].push_back(grains.loose_diameter[g]);
+    mass[k].push_back(grains.loose_mass[g]);
+  }
+  std::vector<ConstrictionSlice> rows(count);
+  for (int k = 0; k < count; ++k) {
+    ConstrictionSlice& r = rows[k];
+    r.lower = slices.lower(k);
+    r.upper = slices.upper(k);
+    r.constrictions = static_cast<double>(discs[k].size());
+    r.control =
+        csd_percentiles(discs[k], {control_percent}, control_weight)[0];
+    for (double m : mass[k]) r.loose_mass += m;
+    r.loose_finer_control_percent =
+        mass_percent_finer(diameter[k], mass[k], r.control);
+  }
+  return rows;
+}
+
+std::vector<double> constriction_vector(
+    const ConstrictionNetwork& net, double control_percent,
+    CsdWeight control_weight, const VerdictGrains& grains,
+    const GradingCriteria& criteria,
+    const std::vector<ConstrictionSlice>& slices) {
   using E = ConstrictionEntry;
   std::vector<double> v(kConstrictionVectorEntries, 0.0);
   std::vector<double> p;
@@ -64,6 +128,18 @@ std::vector<double> constriction_vector(const ConstrictionNetwork& net,
   v[at(E::wan_fell_probability)] = criteria.wan_fell_probability;
   v[at(E::wan_fell_sand_gravel_probability)] =
       criteria.wan_fell_sand_gravel_probability;
+  using S = ConstrictionSliceEntry;
+  for (const ConstrictionSlice& r : slices) {
+    std::vector<double> row(kConstrictionSliceEntries, 0.0);
+    row[static_cast<int>(S::slice_bottom)] = r.lower;
+    row[static_cast<int>(S::slice_top)] = r.upper;
+    row[static_cast<int>(S::slice_constrictions)] = r.constrictions;
+    row[static_cast<int>(S::slice_control)] = r.control;
+    row[static_cast<int>(S::slice_loose_mass)] = r.loose_mass;
+    row[static_cast<int>(S::slice_loose_finer_control_percent)] =
+        r.loose_finer_control_percent;
+    v.insert(v.end(), row.begin(), row.end());
+  }
   return v;
 }
 

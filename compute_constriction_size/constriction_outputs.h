@@ -79,6 +79,20 @@
   X(57, wan_fell_probability, "Wan & Fell, silt-sand-gravel soils: probability of internal instability") \
   X(58, wan_fell_sand_gravel_probability, "Wan & Fell, sand-gravel soils: probability of internal instability")
 
+// Global vector, with slices S: after the entries above, these entries for
+// each height slice s = 1..S (the lowest first): entry J of slice s at
+// 58 + (s - 1) K + J, K the entries of this table. The slices are those of
+// compute primary/fabric's keyword slices (height_slices.h): S of equal
+// height along z from the lowest grain's bottom to the highest grain's top,
+// over the pore-forming and the loose grains.
+#define CONSTRICTION_SLICE_ENTRIES(X)                                          \
+  X(1, slice_bottom, "lower bound z of the slice")                             \
+  X(2, slice_top, "upper bound z of the slice")                                \
+  X(3, slice_constrictions, "constrictions counted whose face's centroid lies in the slice") \
+  X(4, slice_control, "D_cP of the slice's constrictions (`control`, `control_by`; NaN without any)") \
+  X(5, slice_loose_mass, "mass of the loose grains whose centre lies in the slice") \
+  X(6, slice_loose_finer_control_percent, "the slice's loose mass finer than its entry 4, % of the slice's loose mass")
+
 namespace fabric {
 
 enum class ConstrictionEntry {
@@ -87,10 +101,30 @@ enum class ConstrictionEntry {
 constexpr int kConstrictionVectorEntries =
     static_cast<int>(ConstrictionEntry::count);
 
+enum class ConstrictionSliceEntry {
+  CONSTRICTION_SLICE_ENTRIES(FABRIC_OUTPUT_NAME) count
+};
+constexpr int kConstrictionSliceEntries =
+    static_cast<int>(ConstrictionSliceEntry::count);
+
 constexpr int kConstrictionPositions[] = {
     CONSTRICTION_VECTOR_ENTRIES(FABRIC_OUTPUT_POSITION)};
 static_assert(counts_from_one(kConstrictionPositions),
               "constriction_outputs.h: the positions must count 1, 2, 3 ...");
+constexpr int kConstrictionSlicePositions[] = {
+    CONSTRICTION_SLICE_ENTRIES(FABRIC_OUTPUT_POSITION)};
+static_assert(counts_from_one(kConstrictionSlicePositions),
+              "constriction_outputs.h: the slice positions must count 1, 2, 3 ...");
+
+// Size of the global vector with S height slices (0: without slices).
+constexpr int constriction_vector_size(int slices) {
+  return kConstrictionVectorEntries + kConstrictionSliceEntries * slices;
+}
+// Position (from 1, as c_ID[I]) of entry e of height slice s (from 1).
+constexpr int constriction_slice_position(int s, ConstrictionSliceEntry e) {
+  return kConstrictionVectorEntries + (s - 1) * kConstrictionSliceEntries +
+         static_cast<int>(e) + 1;
+}
 
 // Index of an entry in the vector (its position - 1).
 constexpr int at(ConstrictionEntry e) { return static_cast<int>(e); }
@@ -115,20 +149,48 @@ struct GradingCriteria {
 GradingCriteria grading_criteria(const ParticleSizeDistribution& psd);
 
 // The grains of the verdict: the loose grains' diameters and masses, and
-// the mass of the pore-forming grains.
+// the mass of the pore-forming grains; for keyword slices also the heights
+// (z) of the loose grains' centres (else it may stay empty).
 struct VerdictGrains {
-  std::vector<double> loose_diameter, loose_mass;
+  std::vector<double> loose_diameter, loose_mass, loose_z;
   double pore_forming_mass = 0.0;
 };
 
+// One height slice's figures (CONSTRICTION_SLICE_ENTRIES).
+struct ConstrictionSlice {
+  double lower = 0.0, upper = 0.0;  // its heights (z)
+  double constrictions = 0.0;       // discs whose face centroid lies in it
+  double control = 0.0;             // their D_cP; NaN without discs
+  double loose_mass = 0.0;          // loose grains with their centre in it
+  double loose_finer_control_percent = 0.0;  // of loose_mass; 0 without
+};
+
+// The network's discs and the loose grains cut into `count` height slices
+// of equal height (HeightSlices of height_slices.h, as compute
+// primary/fabric's keyword slices) spanning the lowest bottom (z - r) to
+// the highest top (z + r) of the pore-forming spheres and the loose grains
+// (grains.loose_z; radius half the diameter). A disc belongs to the slice of
+// its face_centroid's z, a loose grain to that of its centre; a grain at a
+// non-finite height is in no slice. Each slice's D_cP is the percentile
+// control_percent (counted by control_weight) of its own discs, and its
+// verdict the share of its loose mass finer than that, as entries 41 and
+// 42 of the whole specimen: one slice gives the whole specimen's figures.
+// Throws std::invalid_argument for count < 1, loose_z not one height per
+// loose grain, or no finite extent.
+std::vector<ConstrictionSlice> constriction_slices(
+    const ConstrictionNetwork& net, const std::vector<Sphere>& pore_forming,
+    const VerdictGrains& grains, int count, double control_percent,
+    CsdWeight control_weight);
+
 // The global vector in the table's order (entry I at [I - 1]) of the
 // network `net`, with the controlling constriction D_cP at
-// P = control_percent of the CSD counted by `control_weight`.
-std::vector<double> constriction_vector(const ConstrictionNetwork& net,
-                                        double control_percent,
-                                        CsdWeight control_weight,
-                                        const VerdictGrains& grains,
-                                        const GradingCriteria& criteria);
+// P = control_percent of the CSD counted by `control_weight`, then the
+// entries of each height slice of `slices` (constriction_slices).
+std::vector<double> constriction_vector(
+    const ConstrictionNetwork& net, double control_percent,
+    CsdWeight control_weight, const VerdictGrains& grains,
+    const GradingCriteria& criteria,
+    const std::vector<ConstrictionSlice>& slices = {});
 
 }  // namespace fabric
 

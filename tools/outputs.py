@@ -12,7 +12,9 @@ for every tool and test:
                           (kProfileLayers, specimen_measure.h)
   compute constriction/size
                           compute_constriction_size/constriction_outputs.h
-                          CONSTRICTION_VECTOR_ENTRIES (global vector)
+                          CONSTRICTION_VECTOR_ENTRIES (global vector), then
+                          with keyword slices S CONSTRICTION_SLICE_ENTRIES
+                          per height slice
   fix pore/flow           fix_pore_flow/pore_flow_outputs.h
                           PORE_FLOW_VECTOR_ENTRIES (global vector)
 
@@ -122,10 +124,42 @@ def pack_vector(source=ROOT):
     return entries
 
 
-def constriction_vector(source=ROOT):
-    """compute constriction/size: the entries of the global vector."""
+def constriction_vector(source=ROOT, slices=0):
+    """compute constriction/size: the entries of the global vector; with
+    keyword slices S (slices=S) then those of CONSTRICTION_SLICE_ENTRIES
+    per height slice, the lowest first, named slice<s>_<name> without the
+    table's 'slice_' (slice_control of slice 2: slice2_control)."""
+    path = os.path.join(source, CONSTRICTION_HEADER)
+    entries = read_table(path, "CONSTRICTION_VECTOR_ENTRIES")
+    for s in range(1, slices + 1):
+        for e in constriction_slice_entries(source):
+            name = e.name[len("slice_"):] if e.name.startswith("slice_") else e.name
+            entries.append(Entry(len(entries) + 1, "slice%d_%s" % (s, name), e.meaning))
+    return entries
+
+
+def constriction_slice_entries(source=ROOT):
+    """compute constriction/size: the entries of one height slice (keyword
+    slices), CONSTRICTION_SLICE_ENTRIES."""
     return read_table(os.path.join(source, CONSTRICTION_HEADER),
-                      "CONSTRICTION_VECTOR_ENTRIES")
+                      "CONSTRICTION_SLICE_ENTRIES")
+
+
+def constriction_slices(vector, source=ROOT):
+    """The height slices of compute constriction/size in a whole global
+    vector (entry I at index I-1): a list of {name of
+    CONSTRICTION_SLICE_ENTRIES: value}, the lowest slice first; their
+    number follows from the length ([] without slices). ValueError if the
+    length is not the fixed entries and a whole number of slices."""
+    fixed = len(constriction_vector(source))
+    entries = constriction_slice_entries(source)
+    k = len(entries)
+    rest = len(vector) - fixed
+    if rest < 0 or rest % k:
+        raise ValueError("a vector of %d entries is not compute constriction/size's "
+                         "%d and %d per slice" % (len(vector), fixed, k))
+    return [{e.name: float(vector[fixed + s * k + e.position - 1]) for e in entries}
+            for s in range(rest // k)]
 
 
 def index(entries):

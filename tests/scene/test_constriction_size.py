@@ -17,9 +17,15 @@
    where compute pf exists) both Wan & Fell probabilities of their psd.
    The page's output table quotes
    constriction_outputs.h (entries by name, as every check here reads them).
-3. Bad input stops with an error (3 grains, a sphere container, an unknown
-   keyword, a fabric compute of another style) and a grain hidden inside
-   another is counted with a warning.
+3. Height slices (keyword slices): the page's example with `slices 3`
+   prints the same vector on 1 and 2 ranks, its entries 1-58 those without
+   slices, its slices count every constriction; `slices 1` gives entries
+   1, 41 and 42. In the lattice with `fabric pf slices 5` each slice's
+   D_cP is the lattice's opening, its loose mass that of the fines whose
+   centre lies in it, and its verdict the share of the fine ones in it.
+4. Bad input stops with an error (3 grains, a sphere container, an unknown
+   keyword, a fabric compute of another style, slices 0 and 2.5) and a
+   grain hidden inside another is counted with a warning.
 """
 import math
 import os
@@ -176,6 +182,7 @@ def lattice_checks(args, chk):
         chk.check("the dump local (6 digits) holds entry 1 = %d discs of radius D_open/2"
                   % n_pf, len(radii) == int(n_pf) and all(
                       abs(r - D_OPEN / 2) < 1e-5 * D_OPEN for r in radii))
+    slice_lattice(args, chk)
     if 1 in vectors:
         for r in (2, 4):
             if r in vectors:
@@ -244,6 +251,7 @@ def doc_examples(args, chk):
             if vec.get(r):
                 chk.check("example 1: %d ranks print the vector of 1 rank" % r,
                           vec[r] == vec[1])
+    slice_example(args, chk, root, blocks[0], vec.get(1))
     text = lattice_scene() + blocks[1] + "run 0\n"
     ex2 = os.path.join(args.work, "example2")
     os.makedirs(ex2, exist_ok=True)
@@ -263,6 +271,114 @@ def doc_examples(args, chk):
                   "(%s, %s): in (0, 1), not equal" % (p57, p58),
                   p57 is not None and p58 is not None and 0 < p57 < 1
                   and 0 < p58 < 1 and p57 != p58, cols)
+
+
+def slice_keywords(cid, slices):
+    """The thermo keywords of the whole vector of compute `cid` with
+    `slices` height slices: step, c_ID[1..NV + K slices]."""
+    n = len(su.outputs.constriction_vector(slices=slices))
+    return ["step"] + ["c_%s[%d]" % (cid, i) for i in range(1, n + 1)]
+
+
+def slice_vector(text, cid, slices):
+    """The last whole vector of compute `cid` with `slices` slices printed
+    by the thermo_style of slice_keywords (entry I at I-1), or None."""
+    keys = slice_keywords(cid, slices)
+    rows = su.outputs.read_thermo(text, keys)
+    return [rows[-1][k] for k in keys[1:]] if rows else None
+
+
+def slice_example(args, chk, root, script, whole):
+    """The page's example with `slices 3` (and a second compute with
+    `slices 1`) on 1 and 2 ranks; `whole`: its vector without slices."""
+    line = [l for l in script.splitlines()
+            if l.startswith("compute") and "constriction/size" in l][0]
+    one = line.replace("compute         csd ", "compute         one ").split(" csd ")[0]
+    text = script.replace(line, line + " slices 3\n" + one + " slices 1")
+    keys = slice_keywords("csd", 3)[1:] + slice_keywords("one", 1)[1:]
+    text += ("thermo_style custom step %s\nthermo_modify format float %%.17g\nrun 0\n"
+             % " ".join(keys))
+    got = {}
+    for ranks in (None, 2):
+        inp = su.write_file(os.path.join(root, "in.slices_np%d" % (ranks or 1)), text)
+        res = su.run_launcher(args, inp, nprocs=ranks, cwd=root, timeout=300)
+        if chk.check("example 1 with slices 3 runs on %d rank(s) (%.1f s)"
+                     % (ranks or 1, res.seconds),
+                     res.returncode == 0 and not res.errors(), res.describe()):
+            rows = su.outputs.read_thermo(res.text, ["step"] + keys)
+            got[ranks or 1] = [rows[-1][k] for k in keys] if rows else None
+    if not got.get(1):
+        return
+    n3 = len(su.outputs.constriction_vector(slices=3))
+    v3, v1 = got[1][:n3], got[1][n3:]
+    if got.get(2):
+        chk.check("slices: 2 ranks print the vectors of 1 rank", got[2] == got[1])
+    chk.check("slices 3: entries 1-%d are those without slices" % NV,
+              whole is not None and v3[:NV] == whole)
+    rows = su.outputs.constriction_slices(v3)
+    named = dict(zip((e.name for e in su.outputs.constriction_vector(slices=3)), v3))
+    counted = sum(r["slice_constrictions"] for r in rows)
+    chk.check("slices 3: they join, span the grains, count every constriction "
+              "(%s of %d), each with a D_cP (%s)"
+              % ([r["slice_constrictions"] for r in rows], v3[AT["constrictions"]],
+                 [r["slice_control"] for r in rows]),
+              len(rows) == 3 and rows[0]["slice_top"] == rows[1]["slice_bottom"]
+              and rows[1]["slice_top"] == rows[2]["slice_bottom"]
+              and named["slice2_control"] == rows[1]["slice_control"]
+              and counted == v3[AT["constrictions"]]
+              and all(r["slice_control"] > 0 for r in rows))
+    s1 = su.outputs.constriction_slices(v1)
+    chk.check("slices 1 gives entries 1, 41 and 42: %s" % s1,
+              len(s1) == 1 and s1[0]["slice_constrictions"] == v1[AT["constrictions"]]
+              and s1[0]["slice_control"] == v1[AT["control"]]
+              and s1[0]["slice_loose_finer_control_percent"]
+              == v1[AT["loose_finer_control_percent"]])
+
+
+def slice_lattice(args, chk):
+    """The lattice with fabric pf slices 5: the grains span -R to 5 A + R,
+    so the fines at heights (k + 1/2) A, k = 0..4, fall one layer in each
+    slice (0.2 mm and more from its bounds)."""
+    fine, mass = [0.0] * 5, [0.0] * 5
+    layer_slice = [0, 1, 2, 3, 4]
+    n = 0
+    for i in range(N - 1):
+        for j in range(N - 1):
+            for k in range(N - 1):
+                n += 1
+                d = FINE if n % 2 else COARSE
+                m = 2650 * math.pi / 6 * d ** 3
+                mass[layer_slice[k]] += m
+                if d == FINE:
+                    fine[layer_slice[k]] += m
+    for ranks in (None, 2):
+        text = lattice_scene(processors="1 1 2" if ranks else None)
+        text += "compute cs all constriction/size fabric pf slices 5\n"
+        keys = slice_keywords("cs", 5)
+        text += ("thermo_style custom %s\nthermo_modify format float %%.17g\nrun 0\n"
+                 % " ".join(keys))
+        name = "slices_np%d" % (ranks or 1)
+        res = run(args, chk, name, text, nprocs=ranks)
+        v = slice_vector(res.text, "cs", 5) if res else None
+        if not chk.check("%s prints the vector with 5 slices" % name, v is not None):
+            continue
+        if ranks:
+            chk.check("lattice slices: 2 ranks print the vector of 1 rank",
+                      v == first)
+            continue
+        first = v
+        rows = su.outputs.constriction_slices(v)
+        for s, r in enumerate(rows):
+            want = 100.0 * fine[s] / mass[s]
+            chk.check("lattice slice %d: %d constrictions of D_cP %.9g = D_open, loose "
+                      "mass %.6g = %.6g, %.4f %% finer = %.4f %%"
+                      % (s + 1, r["slice_constrictions"], r["slice_control"],
+                         r["slice_loose_mass"], mass[s],
+                         r["slice_loose_finer_control_percent"], want),
+                      r["slice_constrictions"] > 0
+                      and abs(r["slice_control"] - D_OPEN) < 1e-9 * D_OPEN
+                      and abs(r["slice_loose_mass"] - mass[s]) < 1e-9 * mass[s]
+                      and abs(r["slice_loose_finer_control_percent"] - want) < 1e-6)
 
 
 def thermo_columns(text, script):
@@ -285,6 +401,7 @@ def doc_table(args, chk):
         rows.append("| %d–%d | `%s` … `%s` |" % (AT[first] + 1, AT[last] + 1, first, last))
     rows += ["| %d | `%s` | %s |" % e for e in ENTRIES
              if not DIAMETERS.start <= e.position - 1 < DIAMETERS.stop]
+    rows += ["| %d | `%s` | %s |" % e for e in su.outputs.constriction_slice_entries(args.source)]
     missing = [r for r in rows if r not in doc]
     chk.check("the page quotes constriction_outputs.h: %d entries, position, "
               "name and meaning" % NV,
@@ -312,6 +429,10 @@ def bad_input(args, chk):
         ("fabric of another style", grains + "compute k all ke\n"
          "compute c all constriction/size fabric k\nthermo_style custom step c_c[1]\nrun 0\n",
          "is style ke, not primary/fabric"),
+        ("slices 0", "compute c all constriction/size slices 0\n",
+         "Compute constriction/size: slices 0 must lie in 1..1000"),
+        ("slices 2.5", "compute c all constriction/size slices 2.5\n",
+         "Compute constriction/size: slices '2.5' is not an integer in 1..1000"),
     ]
     for what, tail, phrase in cases:
         inp = su.write_file(os.path.join(args.work, "bad", "in.bad"), base + tail)

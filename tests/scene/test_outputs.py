@@ -52,12 +52,28 @@ def check_tables(chk, source):
                           ("fabric array", outputs.fabric_array(source)),
                           ("pack vector", outputs.pack_vector(source)),
                           ("constriction vector", outputs.constriction_vector(source)),
+                          ("constriction slice", outputs.constriction_slice_entries(source)),
                           ("rest vector", outputs.rest_vector(source)),
                           ("pore flow vector", outputs.pore_flow_vector(source))):
         chk.check("%s: %d entries numbered 1..n with names" % (name, len(entries)),
                   len(entries) > 0 and all(e.name for e in entries))
     chk.check("the class column is %s, c_pf[I] of the per-atom table's 'primary'"
               % outputs.PRIMARY, outputs.PRIMARY == outputs.peratom_name("primary", "pf", source))
+    # compute constriction/size with slices 2: the slices after the fixed
+    # entries, by name in both readers
+    fixed = len(outputs.constriction_vector(source))
+    per = len(outputs.constriction_slice_entries(source))
+    vec = list(range(1, fixed + 2 * per + 1))
+    rows = outputs.constriction_slices(vec, source)
+    named = dict(zip((e.name for e in outputs.constriction_vector(source, 2)), vec))
+    chk.check("constriction slices: 2 slices of %d entries after the %d fixed ones, by name"
+              % (per, fixed), len(rows) == 2 and rows[1]["slice_control"] ==
+              named["slice2_control"] == fixed + per
+              + outputs.constriction_slice_entries(source)[3].position
+              and rows[0]["slice_bottom"] == fixed + 1 and outputs.constriction_slices(
+                  vec[:fixed], source) == [], rows)
+    chk.check("constriction slices: a vector cut mid-slice is refused",
+              raises(outputs.constriction_slices, vec[:-1], source) is not None)
     names = [e.name for e in outputs.pack_vector(source)]
     text = "noise\nPACK_VECTOR %s\n" % " ".join(str(i) for i in range(1, len(names) + 1))
     got = outputs.pack_vector_values(text, source)
