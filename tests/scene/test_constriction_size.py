@@ -190,7 +190,9 @@ def lattice_checks(args, chk):
                           vectors[r] == vectors[1])
 
 
-def doc_examples(args, chk):
+def page_blocks(args, chk):
+    """The page's one block of lines, after examples/in.constriction_size's
+    full script; None unless the page has the block and the link."""
     page = os.path.join(args.source, "docs", "compute_constriction_size.md")
     with open(page) as f:
         t = f.read()
@@ -199,17 +201,26 @@ def doc_examples(args, chk):
     if not chk.check("the page links to examples/in.constriction_size and has one "
                      "block of lines", len(blocks) == 1
                      and "(../examples/in.constriction_size)" in sec):
-        return
+        return None
     with open(os.path.join(args.source, "examples", "in.constriction_size")) as f:
         blocks.insert(0, f.read())
-    root = os.path.join(args.work, "doc")
-    os.makedirs(root, exist_ok=True)
-    link = os.path.join(root, "input_scripts")
+    return blocks
+
+
+def work_folder(path, source):
+    """A work folder that sees input_scripts/."""
+    os.makedirs(path, exist_ok=True)
+    link = os.path.join(path, "input_scripts")
     if not os.path.exists(link):
-        os.symlink(os.path.join(args.source, "input_scripts"), link)
+        os.symlink(os.path.join(source, "input_scripts"), link)
+    return path
+
+
+def run_example1(args, chk, root, script):
+    """Example 1 as written on 1, 2 and 4 ranks: {ranks: its vector}."""
     vec = {}
     for ranks in (None, 2, 4):
-        text = blocks[0] + thermo_vector("csd") + "run 0\n"
+        text = script + thermo_vector("csd") + "run 0\n"
         inp = su.write_file(os.path.join(root, "in.ex1_np%d" % (ranks or 1)), text)
         res = su.run_launcher(args, inp, nprocs=ranks, cwd=root, timeout=300)
         ok = chk.check("example 1 runs as written on %d rank(s) (%.1f s)"
@@ -217,60 +228,78 @@ def doc_examples(args, chk):
                        res.returncode == 0 and not res.errors(), res.describe())
         if ok:
             vec[ranks or 1] = last_thermo(res.text, "csd")
-    if vec.get(1):
-        v = {e.name: vec[1][e.position - 1] for e in ENTRIES}
-        n = v["constrictions"]
-        chk.check("example 1: %d constrictions, D_c35 %.3g <= D_c50 %.3g, %d pores"
-                  % (n, v["dc35_number"], v["dc50_number"], v["pores"]),
-                  n > 100 and 0 < v["dc35_number"] <= v["dc50_number"]
-                  and v["pores"] > n / 10)
-        csd = su.outputs.read_csd(os.path.join(root, "out", "constriction_size", "csd_all.txt"))
-        chk.check("csd_all.txt has entry 1 = %d rows" % len(csd["diameter"]),
-                  len(csd["diameter"]) == n)
-        # control_by area: D_c35 weighted by the discs' area, as computed
-        # from the diameters of csd_all.txt
-        d = sorted(float(x) for x in csd["diameter"])
-        tot, cum, want = sum(x * x for x in d), 0.0, None
-        for x in d:
-            cum += x * x
-            if want is None and 100.0 * cum / tot >= 35.0:
-                want = x
-        line = [l for l in blocks[0].splitlines()
-                if l.startswith("compute") and "constriction/size" in l][0]
-        text = (blocks[0].replace(line, line + " control_by area")
-                + thermo_vector("csd") + "run 0\n")
-        res = su.run_launcher(args, su.write_file(os.path.join(root, "in.ex1_area"), text),
-                              cwd=root, timeout=300)
-        va = last_thermo(res.text, "csd") if res.returncode == 0 else None
-        got = va[AT["control"]] if va else None
-        chk.check("control_by area: entry 41 %s is D_c35 by area from csd_all.txt's diameters "
-                  "(%s), above D_c35 by number %.4g" % (got, want, v["dc35_number"]),
-                  got is not None and want is not None and abs(got - want) <= 1e-6 * want
-                  and got >= v["dc35_number"], res.describe())
-        for r in (2, 4):
-            if vec.get(r):
-                chk.check("example 1: %d ranks print the vector of 1 rank" % r,
-                          vec[r] == vec[1])
-    slice_example(args, chk, root, blocks[0], vec.get(1))
-    text = lattice_scene() + blocks[1] + "run 0\n"
-    ex2 = os.path.join(args.work, "example2")
-    os.makedirs(ex2, exist_ok=True)
-    if not os.path.exists(os.path.join(ex2, "input_scripts")):
-        os.symlink(os.path.join(args.source, "input_scripts"),
-                   os.path.join(ex2, "input_scripts"))
+    return vec
+
+
+def check_control_by_area(args, chk, root, script, csd, dc35_number):
+    """control_by area: D_c35 weighted by the discs' area, as computed from
+    the diameters of csd_all.txt."""
+    d = sorted(float(x) for x in csd["diameter"])
+    tot, cum, want = sum(x * x for x in d), 0.0, None
+    for x in d:
+        cum += x * x
+        if want is None and 100.0 * cum / tot >= 35.0:
+            want = x
+    line = [l for l in script.splitlines()
+            if l.startswith("compute") and "constriction/size" in l][0]
+    text = (script.replace(line, line + " control_by area")
+            + thermo_vector("csd") + "run 0\n")
+    res = su.run_launcher(args, su.write_file(os.path.join(root, "in.ex1_area"), text),
+                          cwd=root, timeout=300)
+    va = last_thermo(res.text, "csd") if res.returncode == 0 else None
+    got = va[AT["control"]] if va else None
+    chk.check("control_by area: entry 41 %s is D_c35 by area from csd_all.txt's diameters "
+              "(%s), above D_c35 by number %.4g" % (got, want, dc35_number),
+              got is not None and want is not None and abs(got - want) <= 1e-6 * want
+              and got >= dc35_number, res.describe())
+
+
+def check_example1(args, chk, root, script, vec):
+    v = {e.name: vec[1][e.position - 1] for e in ENTRIES}
+    n = v["constrictions"]
+    chk.check("example 1: %d constrictions, D_c35 %.3g <= D_c50 %.3g, %d pores"
+              % (n, v["dc35_number"], v["dc50_number"], v["pores"]),
+              n > 100 and 0 < v["dc35_number"] <= v["dc50_number"]
+              and v["pores"] > n / 10)
+    csd = su.outputs.read_csd(os.path.join(root, "out", "constriction_size", "csd_all.txt"))
+    chk.check("csd_all.txt has entry 1 = %d rows" % len(csd["diameter"]),
+              len(csd["diameter"]) == n)
+    check_control_by_area(args, chk, root, script, csd, v["dc35_number"])
+    for r in (2, 4):
+        if vec.get(r):
+            chk.check("example 1: %d ranks print the vector of 1 rank" % r,
+                      vec[r] == vec[1])
+
+
+def check_example2(args, chk, block):
+    text = lattice_scene() + block + "run 0\n"
+    work_folder(os.path.join(args.work, "example2"), args.source)
     res = run(args, chk, "example2", text)
-    if res:
-        snaps = [f for f in os.listdir(os.path.join(args.work, "example2"))
-                 if f.startswith("discs_")]
-        chk.check("example 2 writes the discs (%s)" % snaps, len(snaps) == 1)
-        # psd: both Wan & Fell models, probabilities that differ
-        cols = thermo_columns(res.text, text)
-        p57, p58 = (cols.get("c_csp[%d]" % (AT[n] + 1)) for n in
-                    ("wan_fell_probability", "wan_fell_sand_gravel_probability"))
-        chk.check("example 2 prints both Wan & Fell probabilities of the psd "
-                  "(%s, %s): in (0, 1), not equal" % (p57, p58),
-                  p57 is not None and p58 is not None and 0 < p57 < 1
-                  and 0 < p58 < 1 and p57 != p58, cols)
+    if not res:
+        return
+    snaps = [f for f in os.listdir(os.path.join(args.work, "example2"))
+             if f.startswith("discs_")]
+    chk.check("example 2 writes the discs (%s)" % snaps, len(snaps) == 1)
+    # psd: both Wan & Fell models, probabilities that differ
+    cols = thermo_columns(res.text, text)
+    p57, p58 = (cols.get("c_csp[%d]" % (AT[n] + 1)) for n in
+                ("wan_fell_probability", "wan_fell_sand_gravel_probability"))
+    chk.check("example 2 prints both Wan & Fell probabilities of the psd "
+              "(%s, %s): in (0, 1), not equal" % (p57, p58),
+              p57 is not None and p58 is not None and 0 < p57 < 1
+              and 0 < p58 < 1 and p57 != p58, cols)
+
+
+def doc_examples(args, chk):
+    blocks = page_blocks(args, chk)
+    if blocks is None:
+        return
+    root = work_folder(os.path.join(args.work, "doc"), args.source)
+    vec = run_example1(args, chk, root, blocks[0])
+    if vec.get(1):
+        check_example1(args, chk, root, blocks[0], vec)
+    slice_example(args, chk, root, blocks[0], vec.get(1))
+    check_example2(args, chk, blocks[1])
 
 
 def slice_keywords(cid, slices):
