@@ -14,6 +14,8 @@ stages: blocks of 1,000 steps, 2 to 3 of them). Checked:
 3. the filter holds: no grain coarser than the filter's opening (the
    soil's d60) leaves;
 4. the lid holds the target stress at the end of each stage (within 5 %);
+   a stage cut short by stage_max before a free fine grain could cross
+   the specimen is called so, before it (WARNING) and in its line;
 5. the seepage force acts: gradient 3000 (a pressure drop about the stress) erodes more than gradient 0 did in the same short stage;
 6. bad input stops with an ERROR naming the value: a negative gradient
    after the first, a negative opening, a block that is not a multiple of
@@ -47,6 +49,12 @@ def check_stages(chk, out, res):
     rows = outputs.read_suffusion(os.path.join(out, "suffusion.txt"))
     lines = list(dict.fromkeys(re.findall(
         r"^SEEPAGE: gradient (\S+) .*? for (\d+) steps: eroded (\S+) % of the specimen", res.text, re.M)))
+    cut = re.search(r"^WARNING: gradient 3000: a free fine grain takes (\S+) steps", res.text, re.M)
+    last = re.search(r"^SEEPAGE: gradient 3000 .*; (stopped at stage_max, before a free "
+                     r"fine grain could cross the specimen)$", res.text, re.M)
+    chk.check("the short stage at 3000 is called short: a WARNING before it (%s steps to cross) and "
+              "its line says it stopped at stage_max" % (cut and cut.group(1)),
+              cut is not None and float(cut.group(1)) > 3000 and last is not None, res.text[-1500:])
     chk.check("two stages, rows and SEEPAGE lines agree (%s)" % lines,
               rows["gradient_text"] == ["0", "3000"] and len(lines) == 2
               and all(abs(float(e) - r) < 1e-9 for (_, _, e), r in zip(lines, rows["eroded_pct"])),
