@@ -48,3 +48,23 @@ with open("results/seepage/ranks.csv", "w") as f:
         f.write("%d,%s,%.4f,%.3f,%.3f\n" % (ranks, name, g[pos["primary_percent_by_mass"]],
                                              s["eroded_pct"][-1], s["eroded_loose_pct"][-1]))
 PY
+# the gradient in stages: DA and LA Cu 2.0 (about 30 minutes each)
+for a in discrete layerwise; do
+  build/liggghts-fabric -in input_scripts/in.oedometer -var psd input_scripts/psd/cu2.0.txt -var side 3.3 \
+      -var arrangement $a -var gradients 3 10 30 100 300 -var out out/seepage_grad_$a \
+      -log out/seepage_grad_$a.log > /dev/null || true
+done
+$py - <<'PY'
+import sys
+sys.path.insert(0, "tools")
+import outputs
+with open("results/seepage/gradients.csv", "w") as f:
+    f.write("run,gradient,steps_total,eroded_pct_of_specimen,eroded_pct_of_loose,grains_eroded,"
+            "lid_stress_Pa_at_stage_end\n")
+    for a, r in (("discrete", "DA"), ("layerwise", "LA")):
+        s = outputs.read_suffusion("out/seepage_grad_%s/suffusion.txt" % a)
+        for k in range(len(s["gradient"])):
+            f.write("%s_cu2.0_side3.3_seed1,%s,%d,%.3f,%.3f,%d,%.0f\n" % (
+                r, s["gradient_text"][k], s["steps"][k], s["eroded_pct"][k],
+                s["eroded_loose_pct"][k], s["grains_eroded"][k], s["lid_stress"][k]))
+PY
