@@ -17,9 +17,10 @@ stages: blocks of 1,000 steps, 2 to 3 of them). Checked:
    a stage cut short by stage_max before a free fine grain could cross
    the specimen is called so, before it (WARNING) and in its line;
 5. the seepage force acts: gradient 3000 (a pressure drop about the stress) erodes more than gradient 0 did in the same short stage;
-6. bad input stops with an ERROR naming the value: a negative gradient
-   after the first, a negative opening, a block that is not a multiple of
-   store_every, Cundall's damping 1.
+6. bad input stops with an ERROR naming the value, before the packing
+   and loading it would follow: a negative gradient, a negative opening, a
+   block that is not a multiple of store_every, Cundall's damping 1, and the
+   scene's slices -1 and hold_damping 1.
 """
 import glob
 import math
@@ -86,7 +87,9 @@ BAD = [
     ("a negative opening", {"gradients": [0], "opening": -1e-4}, r"ERROR.*opening -0.0001"),
     ("a block not a multiple of store_every", {"gradients": [0], "stage_block": 750},
      r"ERROR.*stage_block 750"),
-    ("Cundall's damping 1", {"gradients": [0], "seep_damping": 1}, r"ERROR.*damping 1 must lie"),
+    ("Cundall's damping 1", {"gradients": [0], "seep_damping": 1}, r"ERROR.*seep_damping 1"),
+    ("a negative slice count", {"slices": -1}, r"ERROR.*slices -1"),
+    ("a hold damping of 1", {"hold_damping": 1}, r"ERROR.*hold_damping 1"),
 ]
 
 
@@ -94,8 +97,9 @@ def check_bad(args, chk):
     for name, extra, pattern in BAD:
         out, res = run(args, "bad_" + name.split()[-1], **extra)
         m = re.search(pattern, res.text)
-        chk.check("%s: ERROR (%s)" % (name, m.group(0)[:120] if m else "none"),
-                  res.returncode != 0 and m is not None, res.text[-800:])
+        chk.check("%s: ERROR before the loading (%s)" % (name, m.group(0)[:120] if m else "none"),
+                  res.returncode != 0 and m is not None and "BEFORE LOADING" not in res.text,
+                  res.text[-800:])
 
 
 def main():
