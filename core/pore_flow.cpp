@@ -378,13 +378,20 @@ void solve_pressures(const Network& net, const PoreFlowOptions& o,
 void fluxes_and_forces(const Network& net, PoreFlow& out) {
   out.force.assign(net.t.spheres, Vec3::Zero());
   out.viscous_force.assign(net.t.spheres, Vec3::Zero());
+  std::vector<double> section(net.t.spheres, 0.0);
+  out.grain_pressure.assign(net.t.spheres, 0.0);
   for (const Network::Throat& th : net.throats) {
     const ThroatGeometry& g = th.geometry;
     const Polygon& poly = th.polygon;
     const double pa = out.pressure[th.a];
     const double dp = th.b >= 0 ? pa - out.pressure[th.b] : pa;
+    const double face_p = th.b >= 0 ? 0.5 * (pa + out.pressure[th.b]) : pa;
     for (std::size_t k = 0; k < poly.sphere.size(); ++k)
-      if (poly.sphere[k] >= 0) out.force[poly.sphere[k]] += dp * g.section[k] * g.normal;
+      if (poly.sphere[k] >= 0) {
+        out.force[poly.sphere[k]] += dp * g.section[k] * g.normal;
+        out.grain_pressure[poly.sphere[k]] += face_p * g.section[k];
+        section[poly.sphere[k]] += g.section[k];
+      }
     if (th.b < 0) continue;
     const double q = th.conductance * dp;
     out.throats.push_back({th.a, th.b, th.conductance, q});
@@ -399,7 +406,10 @@ void fluxes_and_forces(const Network& net, PoreFlow& out) {
       if (poly.sphere[k] >= 0)
         out.viscous_force[poly.sphere[k]] += g.wetted[k] / g.wetted_surface * drag;
   }
-  for (long i = 0; i < net.t.spheres; ++i) out.force[i] += out.viscous_force[i];
+  for (long i = 0; i < net.t.spheres; ++i) {
+    out.force[i] += out.viscous_force[i];
+    if (section[i] > 0.0) out.grain_pressure[i] /= section[i];
+  }
 }
 
 }  // namespace

@@ -104,6 +104,10 @@ struct PoreFlow {
   std::vector<PoreThroat> throats;
   std::vector<Vec3> force;          // per sphere, N: pressure + viscous
   std::vector<Vec3> viscous_force;  // per sphere, N: the viscous part
+  // per sphere, Pa: the pressure of the pores around it, the mean of each
+  // face's two pores (one, against a wall) weighted by the sphere's section
+  // in the face: the pressure field as the grains see it, for dumps
+  std::vector<double> grain_pressure;
   double inflow = 0.0, outflow = 0.0;  // m^3 / s
   double cross_section = 0.0;          // m^2, of the box across z
   double length = 0.0;                 // m, the box's height

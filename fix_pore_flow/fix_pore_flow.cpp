@@ -136,8 +136,8 @@ FixPoreFlow::FixPoreFlow(LAMMPS *lmp, int narg, char **arg)
   size_vector = fabric::kPoreFlowEntries;
   global_freq = 1;
   extvector = 0;
-  peratom_flag = 1;  // each grain's fluid force, f_ID[1..3]
-  size_peratom_cols = 3;
+  peratom_flag = 1;  // each grain's fluid force f_ID[1..3], pressure f_ID[4]
+  size_peratom_cols = kAtomColumns;
   peratom_freq = 1;
   array_atom = nullptr;
 }
@@ -158,13 +158,13 @@ void FixPoreFlow::post_force(int) {
   if (atom->nmax > nmax_) {
     memory->destroy(array_atom);
     nmax_ = atom->nmax;
-    memory->create(array_atom, nmax_, 3, "pore/flow:array_atom");
+    memory->create(array_atom, nmax_, kAtomColumns, "pore/flow:array_atom");
   }
   double **f = atom->f;
   const tagint *tag = atom->tag;
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; ++i) {
-    std::fill(array_atom[i], array_atom[i] + 3, 0.0);
+    std::fill(array_atom[i], array_atom[i] + kAtomColumns, 0.0);
     if (!(mask[i] & groupbit)) continue;
     // a grain that joined the group after the last solve feels no force
     const auto it = std::lower_bound(ids_.begin(), ids_.end(), tag[i]);
@@ -174,6 +174,7 @@ void FixPoreFlow::post_force(int) {
       f[i][k] += fi[k];
       array_atom[i][k] = fi[k];
     }
+    array_atom[i][3] = pressure_[it - ids_.begin()];
   }
 }
 
@@ -230,6 +231,7 @@ void FixPoreFlow::solve() {
   }
   force_.resize(grains);
   for (long k = 0; k < grains; ++k) force_[k] = from_core(flow.force[k], axis_, sign_);
+  pressure_ = flow.grain_pressure;
   vector_ = fabric::pore_flow_vector(flow, options_,
                                      static_cast<double>(update->ntimestep));
   solved_step_ = update->ntimestep;
@@ -245,5 +247,6 @@ double FixPoreFlow::compute_vector(int i) {
 double FixPoreFlow::memory_usage() {
   return static_cast<double>(ids_.size()) * sizeof(tagint) +
          static_cast<double>(force_.size()) * sizeof(force_[0]) +
-         3.0 * nmax_ * sizeof(double);
+         static_cast<double>(pressure_.size()) * sizeof(double) +
+         static_cast<double>(kAtomColumns) * nmax_ * sizeof(double);
 }

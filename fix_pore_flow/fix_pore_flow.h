@@ -47,6 +47,8 @@ class FixPoreFlow : public Fix {
   std::vector<tagint> ids_;          // per grain of the last solve: its ID,
                                      // increasing
   std::vector<std::array<double, 3>> force_;  // per grain, N, the box's frame
+  std::vector<double> pressure_;     // per grain, Pa: the pores around it
+  static constexpr int kAtomColumns = 4;  // fx, fy, fz, pressure
   std::array<double, fabric::kPoreFlowEntries> vector_{};
   bigint solved_step_ = -1;
   int nmax_ = 0;                     // rows of array_atom allocated

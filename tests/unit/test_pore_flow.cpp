@@ -88,6 +88,28 @@ TEST(PoreFlow, PoresHoldPressuresBetweenTheInflowAndTheOutflow) {
   }
 }
 
+TEST(PoreFlow, GrainPressureFollowsTheLinearDropBetweenTheFaces) {
+  // Darcy flow through a uniform packing: the pressure falls linearly from
+  // the inflow face (z lo) to the outflow face, and so does the pressure
+  // each grain sees, within the scatter of its pores.
+  const Packing p = equal_spheres(0.40, 8.0);
+  const double p_in = 3000.0, p_out = 1000.0;
+  const PoreFlow f = flow(p, p_in, p_out);
+  ASSERT_EQ(f.grain_pressure.size(), p.spheres.size());
+  const double L = p.box.hi.z() - p.box.lo.z();
+  double err2 = 0.0;
+  for (std::size_t i = 0; i < p.spheres.size(); ++i) {
+    const double gp = f.grain_pressure[i];
+    ASSERT_TRUE(std::isfinite(gp));
+    EXPECT_GE(gp, p_out - 1e-9);
+    EXPECT_LE(gp, p_in + 1e-9);
+    const double linear = p_in - (p_in - p_out) * (p.spheres[i].centre.z() - p.box.lo.z()) / L;
+    err2 += (gp - linear) * (gp - linear);
+  }
+  // rms off the line within 5 % of the drop (a grain spans 1/8 of it)
+  EXPECT_LT(std::sqrt(err2 / p.spheres.size()), 0.05 * (p_in - p_out));
+}
+
 TEST(PoreFlow, FluidForceOnTheGrainsIsThePressureDropTimesTheCrossSection) {
   for (double n : {0.38, 0.40, 0.44}) {
     const Packing p = equal_spheres(n, 8.0);
