@@ -49,7 +49,11 @@ std::string check_rule(const RestRule& r) {
 }
 
 RestProtocol::RestProtocol(const RestRule& rule, long start_step)
-    : rule_(rule), start_(start_step) {}
+    : rule_(rule), start_(start_step), block_start_(start_step) {}
+
+long RestProtocol::block_length() const {
+  return reloads_ > 0 ? rule_.check : rule_.block;
+}
 
 void RestProtocol::add_step(long, double stress, double target) {
   if (phase_ != RestPhase::loading) return;
@@ -61,8 +65,8 @@ void RestProtocol::add_step(long, double stress, double target) {
 }
 
 long RestProtocol::next_decision(long step) const {
-  const long from = phase_ == RestPhase::relaxing ? relax_start_ : start_;
-  const long every = phase_ == RestPhase::relaxing ? rule_.check : rule_.block;
+  const long from = phase_ == RestPhase::relaxing ? relax_start_ : block_start_;
+  const long every = phase_ == RestPhase::relaxing ? rule_.check : block_length();
   if (step < from) return from + every;
   return from + every * ((step - from) / every + 1);
 }
@@ -73,8 +77,8 @@ RestDecision RestProtocol::decide(long step, const RestMeasures& m) {
     if (step <= relax_start_ || (step - relax_start_) % rule_.check != 0) return {};
     return relax_check(step, m);
   }
-  if (step <= start_ || (step - start_) % rule_.block != 0) return {};
-  if (n_ != rule_.block) {  // a block begun under the relaxation: not a measure
+  if (step <= block_start_ || (step - block_start_) % block_length() != 0) return {};
+  if (n_ != block_length()) {  // a block begun under the relaxation: not a measure
     n_ = 0;
     s_ = e_ = e2_ = 0.0;
     return {};
@@ -207,6 +211,7 @@ RestDecision RestProtocol::relax_check(long step, const RestMeasures& m) {
     rest_stress_ = m.stress_now;
     ++reloads_;
     phase_ = RestPhase::loading;
+    block_start_ = step;
     n_ = 0;
     s_ = e_ = e2_ = 0.0;
     RestDecision d;
@@ -259,14 +264,15 @@ RestDecision RestProtocol::relax_check(long step, const RestMeasures& m) {
   return {};
 }
 
-std::array<double, 13> RestProtocol::state() const {
+std::array<double, 14> RestProtocol::state() const {
   return {static_cast<double>(phase_), static_cast<double>(start_), static_cast<double>(end_),
           static_cast<double>(relax_start_), static_cast<double>(relaxed_),
           static_cast<double>(reloads_), static_cast<double>(swings_),
-          p_[0], p_[1], p_[2], block_mean_, block_rms_, block_sd_};
+          p_[0], p_[1], p_[2], block_mean_, block_rms_, block_sd_,
+          static_cast<double>(block_start_)};
 }
 
-void RestProtocol::restore(const std::array<double, 13>& s) {
+void RestProtocol::restore(const std::array<double, 14>& s) {
   phase_ = static_cast<RestPhase>(static_cast<int>(s[0]));
   start_ = static_cast<long>(s[1]);
   end_ = static_cast<long>(s[2]);
@@ -280,6 +286,7 @@ void RestProtocol::restore(const std::array<double, 13>& s) {
   block_mean_ = s[10];
   block_rms_ = s[11];
   block_sd_ = s[12];
+  block_start_ = static_cast<long>(s[13]);
   n_ = 0;
   s_ = e_ = e2_ = 0.0;
   blocks_ = 0;

@@ -102,10 +102,13 @@ class RestProtocol {
   double rest_stress() const { return rest_stress_; }
 
   // the state a checkpoint keeps, and back (the rule is given again)
-  std::array<double, 13> state() const;
-  void restore(const std::array<double, 13>& s);
+  std::array<double, 14> state() const;
+  void restore(const std::array<double, 14>& s);
 
  private:
+  // steps of a block of loading: `block`, or `check` once the servo has
+  // taken the lid again (it corrects a few per cent of a balanced packing)
+  long block_length() const;
   RestDecision end_of_block(long step, const RestMeasures& m);
   // the block's stress means from its sums, which start again; the new
   // primary fraction kept: returns how far it moved over the last two blocks
@@ -122,6 +125,8 @@ class RestProtocol {
   RestRule rule_;
   RestPhase phase_ = RestPhase::loading;
   long start_;              // step the loading began
+  long block_start_;        // step the blocks of loading are counted from:
+                            // the start, or the last reload
   long relax_start_ = 0;    // step the current relaxation began
   long end_ = 0;            // step the protocol ended
   long relaxed_ = 0;        // steps relaxed before the current relaxation

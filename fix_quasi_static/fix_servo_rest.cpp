@@ -20,7 +20,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-constexpr int kStateSize = 13;  // RestProtocol::state()
+constexpr int kStateSize = 14;  // RestProtocol::state()
 
 double positive(const StyleArgs &args, int i, const char *what) {
   const double x = args.number(i, what);

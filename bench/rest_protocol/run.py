@@ -2,7 +2,9 @@
 """The rest protocol's variants, one scene run per row: the relaxation held
 or under the servo, the reload at once or once balanced, a tighter load_tol
 (protocol_table.csv, side 7.7), and rest_tol 1e-3 against 1e-4 (side 3.3,
-tolerance_table.csv). Rows already in a table are not run again.
+tolerance_table.csv), and Cundall's local damping while loading against a
+slower servo (damping_table.csv, side 7.7). Rows already in a table are not
+run again.
 
     /usr/bin/python3 bench/rest_protocol/run.py --out results/rest/force_balance --runs out/rest_protocol
 
@@ -30,12 +32,22 @@ PROTOCOL = [("protocol", "DA", "cu2.5", s, "held, reload once balanced", ONCE) f
     ("protocol", "LA", "cu2.5", s, "servo", SERVO) for s in (2, 3)] + [
     ("protocol", "LA", "cu3.0", 2, "held, reload once balanced", ONCE),
     ("protocol", "LA", "cu3.0", 2, "held, reload early", {})]
+# Cundall's local damping while loading (alpha), and the servo four times
+# slower with none: steps to rest against the answer (damping_table.csv)
+# (alpha 0.7 never comes to rest: one seed shows it)
+DAMPING = [("damping", "DA", "cu2.5", s, "alpha %s" % a, {"damping": a} if a != "0" else {})
+           for a in ("0", "0.1", "0.2", "0.4") for s in (1, 2, 3)] + [
+    ("damping", "DA", "cu2.5", 1, "alpha 0.7", {"damping": "0.7"})] + [
+    ("damping", "DA", "cu2.5", s, "alpha 0, the servo 4 times slower", {"kp": "0.05", "vmax": "0.0025"})
+    for s in (1, 2, 3)]
 TOLERANCE = [("tolerance", "DA", "cu2.5", s, "held, reload once balanced",
               dict(ONCE, side="3.3", rest_tol=tol, relax_max="200000"))
              for s in (1, 2, 3) for tol in ("1e-3", "1e-4")]
 FIELDS = {
     "protocol": ["rule", "soil", "seed", "relaxation", "steps", "at_rest", "primary_volume_pct",
                  "lid_stress_Pa", "reloads", "wall_s"],
+    "damping": ["rule", "soil", "seed", "relaxation", "steps", "at_rest", "primary_volume_pct",
+                "lid_stress_Pa", "reloads", "wall_s"],
     "tolerance": ["side", "rule", "soil", "seed", "rest_tol", "relaxation", "steps", "steps_relaxed",
                   "ratio", "lid_stress_Pa", "primary_volume_pct", "wall_s"],
 }
@@ -70,8 +82,12 @@ def main():
     ap.add_argument("--out", required=True, help="folder of protocol_table.csv and tolerance_table.csv")
     ap.add_argument("--runs", required=True, help="folder of the run folders")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--tables", nargs="+", default=["protocol", "tolerance", "damping"],
+                    help="which tables to make (default: all)")
     a = ap.parse_args()
-    for table, rows in (("protocol", PROTOCOL), ("tolerance", TOLERANCE)):
+    for table, rows in (("protocol", PROTOCOL), ("tolerance", TOLERANCE), ("damping", DAMPING)):
+        if table not in a.tables:
+            continue
         path = os.path.join(a.out, "%s_table.csv" % table)
         order = [name(r) for r in rows]
         done = {r["name"] for r in oedometer_runs.read_rows(path)}

@@ -30,10 +30,12 @@ root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mpirun $root -np 2 $L -in input_scripts/in.oedometer -var hold 20000 -var out out/rest_hold77 | grep "^HOLD"
 mpirun $root -np 2 $L -in input_scripts/in.oedometer -var hold 20000 -var hold_zero 0 -var hold_damping 0.7 \
     -var out out/rest_hold77_damped | grep "^HOLD"
-# force_balance: the protocol and tolerance tables, one scene run per row (about 2 hours on 2 cores)
+# force_balance: the protocol, tolerance and damping tables, one scene run per row (about 2.5 hours on 2 cores)
 $py bench/rest_protocol/run.py --out results/rest/force_balance --runs out/rest_protocol
 cp out/rest_protocol/protocol_DA_cu2.5_seed1_relax_lidservo_relax_max40000_rest_tol1e-4/fabric_series.txt \
     results/rest/force_balance/servo_relaxation_tol1e-4_series.txt
+# ... the damping table's chart (damping_table.csv: bench/rest_protocol/run.py above, about 40 minutes of it)
+$py bench/rest_protocol/damping_chart.py results/rest/force_balance/damping_table.csv
 # creep_diagnosis: the former rest held, one setting moved at a time (about 30 minutes on 2 cores)
 $py bench/hold_diagnosis/run.py --out out/rest_creep
 cp out/rest_creep/hold_table.csv out/rest_creep/hold_series.csv out/rest_creep/hold_diagnosis.png \
