@@ -51,10 +51,6 @@ std::string check_rule(const RestRule& r) {
 RestProtocol::RestProtocol(const RestRule& rule, long start_step)
     : rule_(rule), start_(start_step), block_start_(start_step) {}
 
-long RestProtocol::block_length() const {
-  return reloads_ > 0 ? rule_.check : rule_.block;
-}
-
 void RestProtocol::add_step(long, double stress, double target) {
   if (phase_ != RestPhase::loading) return;
   const double e = target != 0.0 ? stress / target - 1.0 : 0.0;
@@ -66,7 +62,7 @@ void RestProtocol::add_step(long, double stress, double target) {
 
 long RestProtocol::next_decision(long step) const {
   const long from = phase_ == RestPhase::relaxing ? relax_start_ : block_start_;
-  const long every = phase_ == RestPhase::relaxing ? rule_.check : block_length();
+  const long every = phase_ == RestPhase::relaxing ? rule_.check : rule_.block;
   if (step < from) return from + every;
   return from + every * ((step - from) / every + 1);
 }
@@ -77,8 +73,8 @@ RestDecision RestProtocol::decide(long step, const RestMeasures& m) {
     if (step <= relax_start_ || (step - relax_start_) % rule_.check != 0) return {};
     return relax_check(step, m);
   }
-  if (step <= block_start_ || (step - block_start_) % block_length() != 0) return {};
-  if (n_ != block_length()) {  // a block begun under the relaxation: not a measure
+  if (step <= block_start_ || (step - block_start_) % rule_.block != 0) return {};
+  if (n_ != rule_.block) {  // a block begun under the relaxation: not a measure
     n_ = 0;
     s_ = e_ = e2_ = 0.0;
     return {};

@@ -77,8 +77,8 @@ class RestProtocol {
   // Every step of the loading: the lid stress and the target of the step.
   void add_step(long step, double stress, double target);
   // The first step after `step` at which decide() must be called: the end
-  // of a block of loading (counted from the start), or the relaxation's
-  // next check.
+  // of a block of loading (counted from the start or the last reload), or
+  // the relaxation's next check.
   long next_decision(long step) const;
   RestDecision decide(long step, const RestMeasures& m);
 
@@ -106,9 +106,6 @@ class RestProtocol {
   void restore(const std::array<double, 14>& s);
 
  private:
-  // steps of a block of loading: `block`, or `check` once the servo has
-  // taken the lid again (it corrects a few per cent of a balanced packing)
-  long block_length() const;
   RestDecision end_of_block(long step, const RestMeasures& m);
   // the block's stress means from its sums, which start again; the new
   // primary fraction kept: returns how far it moved over the last two blocks
@@ -126,7 +123,8 @@ class RestProtocol {
   RestPhase phase_ = RestPhase::loading;
   long start_;              // step the loading began
   long block_start_;        // step the blocks of loading are counted from:
-                            // the start, or the last reload
+                            // the start, or the last reload (a whole block
+                            // of the servo after it, not the rest of one)
   long relax_start_ = 0;    // step the current relaxation began
   long end_ = 0;            // step the protocol ended
   long relaxed_ = 0;        // steps relaxed before the current relaxation

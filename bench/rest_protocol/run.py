@@ -34,10 +34,11 @@ PROTOCOL = [("protocol", "DA", "cu2.5", s, "held, reload once balanced", ONCE) f
     ("protocol", "LA", "cu3.0", 2, "held, reload early", {})]
 # Cundall's local damping while loading (alpha), and the servo four times
 # slower with none: steps to rest against the answer (damping_table.csv)
-# (alpha 0.7 never comes to rest: one seed shows it)
+# (alpha 0.4 and 0.7 do not come to rest within 40,000 steps of relaxation
+# or t_max: one seed each shows it)
 DAMPING = [("damping", "DA", "cu2.5", s, "alpha %s" % a, {"damping": a} if a != "0" else {})
-           for a in ("0", "0.1", "0.2", "0.4") for s in (1, 2, 3)] + [
-    ("damping", "DA", "cu2.5", 1, "alpha 0.7", {"damping": "0.7"})] + [
+           for a in ("0", "0.1", "0.2") for s in (1, 2, 3)] + [
+    ("damping", "DA", "cu2.5", 1, "alpha %s" % a, {"damping": a}) for a in ("0.4", "0.7")] + [
     ("damping", "DA", "cu2.5", s, "alpha 0, the servo 4 times slower", {"kp": "0.05", "vmax": "0.0025"})
     for s in (1, 2, 3)]
 TOLERANCE = [("tolerance", "DA", "cu2.5", s, "held, reload once balanced",

@@ -25,9 +25,10 @@ $L -in input_scripts/in.oedometer -var side 3.3 -var hold 20000 -var out out/res
 cp out/rest_hold33/hold_series.txt results/rest/force_balance/hold33_series.txt
 $L -in input_scripts/in.oedometer -var relax_lid servo -var hold 20000 -var out out/rest_servo_hold
 cp out/rest_servo_hold/hold_series.txt results/rest/force_balance/hold_after_servo_rest_side7.7.txt
-# the main job held 20,000 steps, zeroed (the default) and damped instead (hold_side7.7.csv: the HOLD lines)
+# the main job and seed 2 (one rank) held 20,000 steps (hold_side7.7.csv: the HOLD lines), and the main job damped instead of zeroed
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mpirun $root -np 2 $L -in input_scripts/in.oedometer -var hold 20000 -var out out/rest_hold77 | grep "^HOLD"
+$L -in input_scripts/in.oedometer -var seed 2 -var hold 20000 -var out out/rest_hold77_seed2 | grep "^HOLD"
 mpirun $root -np 2 $L -in input_scripts/in.oedometer -var hold 20000 -var hold_zero 0 -var hold_damping 0.7 \
     -var out out/rest_hold77_damped | grep "^HOLD"
 # force_balance: the protocol, tolerance and damping tables, one scene run per row (about 2.5 hours on 2 cores)
