@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "atom.h"
 #include "comm.h"
@@ -266,16 +267,28 @@ double FixServoRest::compute_vector(int i) {
   }
 }
 
+// The state is preceded by its length, so that a checkpoint of another
+// layout (an older plugin's 13 entries, whose first is the phase 0-4) is an
+// error, not a state read past its end.
 void FixServoRest::write_restart(FILE *fp) {
   if (comm->me != 0) return;
   const std::array<double, kStateSize> s = protocol_->state();
-  const int size = kStateSize * sizeof(double);
+  const double n = kStateSize;
+  const int size = (kStateSize + 1) * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);
+  fwrite(&n, sizeof(double), 1, fp);
   fwrite(s.data(), sizeof(double), kStateSize, fp);
 }
 
 void FixServoRest::restart(char *buf) {
+  double n;
+  memcpy(&n, buf, sizeof(double));
+  if (n != kStateSize)
+    error->all(FLERR, ("Fix servo/rest: the restart file holds a protocol state of another "
+                       "layout (first entry " + std::to_string(n) + ", this plugin writes " +
+                       std::to_string(kStateSize) + " entries): it was written by another "
+                       "version of the plugin; run the job again from its start").c_str());
   std::array<double, kStateSize> s;
-  memcpy(s.data(), buf, sizeof(double) * kStateSize);
+  memcpy(s.data(), buf + sizeof(double), sizeof(double) * kStateSize);
   protocol_->restore(s);
 }

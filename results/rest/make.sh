@@ -26,6 +26,7 @@ cp out/rest_hold33/hold_series.txt results/rest/force_balance/hold33_series.txt
 $L -in input_scripts/in.oedometer -var relax_lid servo -var hold 20000 -var out out/rest_servo_hold
 cp out/rest_servo_hold/hold_series.txt results/rest/force_balance/hold_after_servo_rest_side7.7.txt
 # the main job and seed 2 (one rank) held 20,000 steps (hold_side7.7.csv: the HOLD lines), and the main job damped instead of zeroed
+# (results/rest/README quotes its 39 % as measured when a reload waited for the end of its block)
 root=""; [ "$(id -u)" -eq 0 ] && root="--allow-run-as-root"
 mpirun $root -np 2 $L -in input_scripts/in.oedometer -var hold 20000 -var out out/rest_hold77 | grep "^HOLD"
 $L -in input_scripts/in.oedometer -var seed 2 -var hold 20000 -var out out/rest_hold77_seed2 | grep "^HOLD"
