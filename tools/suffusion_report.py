@@ -7,8 +7,11 @@ grains, and per size interval; which eroded grains were loose at rest.
 
 writes DIR/stages.csv (one row per run and stage), DIR/intervals.csv (one
 row per run, stage and size interval: the interval's volume eroded so far,
-% of the interval) and DIR/suffusion.png (eroded % against the gradient;
-eroded % of each interval after the last stage), and prints the table.
+% of the interval), DIR/depth.csv (one row per run and height slice one
+coarsest diameter thick, counted from the outlet: where the grains eroded
+by the end of the last stage were at rest, as % of the slice's loose
+volume) and DIR/suffusion.png (eroded % against the gradient; eroded % of
+each interval after the last stage), and prints the table.
 Shares are by volume (the grains are of one material). It reads the run's
 suffusion.txt, its eroded_i<gradient>.txt files and final.dump (each grain's
 class and interval at rest) through tools/outputs.py.
@@ -61,9 +64,39 @@ def run_report(run):
                           "diameter_mm": "%.4f" % diam_of[k],
                           "loose_pct_of_interval_at_rest": "%.2f" % (100.0 * loose_of[k] / vol_of[k]),
                           "eroded_pct_of_interval": "%.3f" % (100.0 * eroded[k] / vol_of[k])})
-    return rows, irows
+    return rows, irows, depth_profile(run, grains, snap, eroded_ids(run, stages))
 
 
+def eroded_ids(run, stages):
+    """The ids of every grain that left through the outlet, all stages."""
+    return {i for g in stages["gradient_text"]
+            for i in outputs.read_outlet(outputs.eroded_file(run, g))["id"]}
+
+
+def depth_profile(run, grains, snap, left):
+    """Per slice one coarsest diameter thick, counted from the outlet (the
+    lowest grain bottom at rest; the flow runs down): the slice's loose
+    volume at rest and the share of it eroded (grains by their centre)."""
+    ids = snap.col("id", int)
+    z, r = snap["z"], snap["radius"]
+    dmax = 2.0 * r.max()
+    k = np.floor((z - (z - r).min()) / dmax).astype(int)
+    name = os.path.basename(os.path.normpath(run))
+    out = []
+    for s in range(k.max() + 1):
+        sel = [i for i, kk in zip(ids, k) if kk == s]
+        loose = sum(grains[i][0] for i in sel if not grains[i][2])
+        gone = sum(grains[i][0] for i in sel if i in left and not grains[i][2])
+        gone_all = sum(grains[i][0] for i in sel if i in left)
+        out.append({"run": name, "slice_from_outlet": s, "from_dmax": s, "to_dmax": s + 1,
+                    "grains": len(sel), "loose_volume_mm3": "%.6e" % (loose * 1e9),
+                    "eroded_loose_pct_of_slice_loose": "%.2f" % (100.0 * gone / loose if loose > 0 else 0.0),
+                    "eroded_volume_mm3": "%.6e" % (gone_all * 1e9)})
+    return out
+
+
+DEPTH_FIELDS = ["run", "slice_from_outlet", "from_dmax", "to_dmax", "grains", "loose_volume_mm3",
+                "eroded_loose_pct_of_slice_loose", "eroded_volume_mm3"]
 STAGE_FIELDS = ["run", "gradient", "pressure_drop", "steps", "eroded_pct", "eroded_loose_pct",
                 "stage_eroded_pct", "grains_eroded", "stage_grains", "stage_primary_at_rest_pct",
                 "primary_pct", "porosity", "lid_stress", "permeability"]
@@ -107,13 +140,15 @@ def main():
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
-    rows, irows = [], []
+    rows, irows, drows = [], [], []
     for run in a.runs:
-        r, i = run_report(run)
+        r, i, d = run_report(run)
         rows += r
         irows += i
+        drows += d
     write_csv(os.path.join(a.out, "stages.csv"), STAGE_FIELDS, rows)
     write_csv(os.path.join(a.out, "intervals.csv"), INTERVAL_FIELDS, irows)
+    write_csv(os.path.join(a.out, "depth.csv"), DEPTH_FIELDS, drows)
     plot(os.path.join(a.out, "suffusion.png"), rows, irows)
     print("%-34s %8s %7s %9s %9s %7s %9s" % ("run", "gradient", "steps", "eroded%", "loose%", "grains",
                                               "primary%"))

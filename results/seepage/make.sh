@@ -3,8 +3,9 @@
 # rules, side 3.3, seed 1, at the scene's defaults, then the seepage test at
 # gradient 300 (-var gradients 300, the flow solved every 1,000 steps); the verdict of compute
 # constriction/size on the same specimens at rest; the eroded volume per
-# run, stage and size interval. Run from the repository root. About 2
-# core-hours (Cu 3.0 most of it).
+# run, stage and size interval; the size study (Cu 2.0 up to side 7.7). Run
+# from the repository root. About 3.5
+# core-hours (Cu 3.0 and the side-7.7 runs most of it).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 py=/usr/bin/python3
@@ -68,3 +69,15 @@ with open("results/seepage/gradients.csv", "w") as f:
                 r, s["gradient_text"][k], s["steps"][k], s["eroded_pct"][k],
                 s["eroded_loose_pct"][k], s["grains_eroded"][k], s["lid_stress"][k]))
 PY
+# the size study: Cu 2.0, both rules, side 3.3 seeds 1-3, sides 5.5 and 7.7
+# seed 1 (about 1.5 core-hours, side 7.7 most of it)
+$py tools/oedometer_study.py --sides 3.3 --soils cu2.0 --rules discrete layerwise \
+    --seeds 1 2 3 --jobs 2 --ranks 1 --var gradients=300 flow_every=1000 --out out/seepage_size
+$py tools/oedometer_study.py --sides 5.5 7.7 --soils cu2.0 --rules discrete layerwise \
+    --seeds 1 --jobs 2 --ranks 1 --var gradients=300 flow_every=1000 --out out/seepage_size
+mkdir -p results/seepage/size
+cp out/seepage_size/study.csv results/seepage/size/study.csv
+$py tools/constriction_verdict.py --study out/seepage_size --dest results/seepage/size/verdict
+rm -f results/seepage/size/verdict/csd_*.txt     # the CSDs of side 7.7 run to megabytes: out/ keeps them
+$py tools/suffusion_report.py out/seepage_size/runs/* --out results/seepage/size
+$py results/seepage/score.py results/seepage/size

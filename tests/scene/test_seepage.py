@@ -17,6 +17,9 @@ stages: blocks of 1,000 steps, 2 to 3 of them). Checked:
    a stage cut short by stage_max before a free fine grain could cross
    the specimen is called so, before it (WARNING) and in its line;
 5. the seepage force acts: gradient 3000 (a pressure drop about the stress) erodes more than gradient 0 did in the same short stage;
+   tools/suffusion_report.py's depth profile (where the eroded grains were
+   at rest, by slices from the outlet) holds the volume of every eroded
+   grain, in slices that cover the specimen;
 6. bad input stops with an ERROR naming the value, before the packing
    and loading it would follow: a negative gradient, a negative opening, a
    block that is not a multiple of store_every, Cundall's damping 1, and the
@@ -32,6 +35,7 @@ import scene_util as su
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 import outputs  # noqa: E402
+import suffusion_report  # noqa: E402
 
 SCENE = {"psd": "input_scripts/psd/cu2.5.txt", "side": 3.3, "stage_block": 1000,
          "stage_min": 2, "stage_max": 3, "flow_every": 200}
@@ -80,6 +84,16 @@ def check_balance(chk, out, rows, d60):
     chk.check("gradient 3000 erodes more than gradient 0 (%.4f against %.4f %%)"
               % (rows["stage_eroded_pct"][1], rows["stage_eroded_pct"][0]),
               rows["stage_eroded_pct"][1] > rows["stage_eroded_pct"][0] + 1e-3, "")
+    _, _, depth = suffusion_report.run_report(out)
+    in_slices = sum(float(r["eroded_volume_mm3"]) for r in depth) * 1e-9
+    # the outlet file writes diameters to 4 digits: volumes agree to 3 parts in 10^3
+    at_rest = outputs.last_snapshot(os.path.join(out, "final.dump")).natoms
+    in_depth = sum(r["grains"] for r in depth)
+    chk.check("the depth profile holds every eroded grain's volume (%.6g against the outlet files' "
+              "%.6g m^3) and its %d slices every grain at rest (%d of %d)"
+              % (in_slices, vol, len(depth), in_depth, at_rest),
+              abs(in_slices - vol) <= 3e-3 * vol and len(depth) >= 3 and in_depth == at_rest
+              and all(r["grains"] > 0 for r in depth), "")
 
 
 BAD = [
