@@ -79,13 +79,16 @@ def run_scene(rundir, variables, ranks=1):
             sys.stderr.write("exit %d: see %s/screen.txt\n" % (rc, rundir))
             return None
         if "CHECKPOINT: written" in job and not re.search(r"^STOP: ", job, re.M):
-            line = re.search(r"^CHECKPOINT: after .*?(\d+ steps of loading).*?kinetic energy "
-                             r"(\S+) J \(limit (\S+) J\).*?primary fabric (\S+) %", job, re.M)
+            line = re.search(r"^CHECKPOINT: after .*?(\d+ steps of loading).*?unbalanced-force ratio (\S+) "
+                             r"\(rest_tol (\S+)\), kinetic energy (\S+) J"
+                             r".*?primary fabric (\S+) %", job, re.M)
             if line:
-                print("%s: %s, kinetic energy %.3g J (limit %.3g J), primary %.2f %% by mass; "
-                      "%.0f s so far, going on from the checkpoint"
-                      % (os.path.basename(rundir), line.group(1), float(line.group(2)),
-                         float(line.group(3)), float(line.group(4)), wall), flush=True)
+                ratio, tol, ke = (float(line.group(k)) for k in (2, 3, 4))
+                where = ("unbalanced-force ratio %.3g (rest below %g)" % (ratio, tol) if tol > 0
+                         else "kinetic energy %.3g J (the energy rule)" % ke)
+                print("%s: %s, %s, primary %.2f %% by mass; %.0f s so far, going on from the checkpoint"
+                      % (os.path.basename(rundir), line.group(1), where, float(line.group(5)), wall),
+                      flush=True)
             resume = True
             continue
         break
