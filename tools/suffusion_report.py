@@ -48,9 +48,10 @@ def run_report(run):
                                                           lambda t: int(float(t))) == k])
                for k in intervals}
     eroded = {k: 0.0 for k in intervals}
-    rows, irows = [], []
+    rows, irows, left_all = [], [], set()
     for s, g in enumerate(stages["gradient_text"]):
         left = outputs.read_outlet(outputs.eroded_file(run, g))["id"]
+        left_all.update(left)
         was_primary = sum(grains[i][0] for i in left if grains[i][2])
         for i in left:
             eroded[grains[i][1]] += grains[i][0]
@@ -64,38 +65,33 @@ def run_report(run):
                           "diameter_mm": "%.4f" % diam_of[k],
                           "loose_pct_of_interval_at_rest": "%.2f" % (100.0 * loose_of[k] / vol_of[k]),
                           "eroded_pct_of_interval": "%.3f" % (100.0 * eroded[k] / vol_of[k])})
-    return rows, irows, depth_profile(run, grains, snap, eroded_ids(run, stages))
+    return rows, irows, depth_profile(run, snap, left_all)
 
 
-def eroded_ids(run, stages):
-    """The ids of every grain that left through the outlet, all stages."""
-    return {i for g in stages["gradient_text"]
-            for i in outputs.read_outlet(outputs.eroded_file(run, g))["id"]}
-
-
-def depth_profile(run, grains, snap, left):
+def depth_profile(run, snap, left):
     """Per slice one coarsest diameter thick, counted from the outlet (the
-    lowest grain bottom at rest; the flow runs down): the slice's loose
-    volume at rest and the share of it eroded (grains by their centre)."""
+    lowest grain bottom at rest; the flow runs down; a grain in the slice of
+    its centre): the slice's grains and loose volume at rest, the volume
+    eroded from it (loose and all) and the loose share eroded."""
     ids = snap.col("id", int)
     z, r = snap["z"], snap["radius"]
-    dmax = 2.0 * r.max()
-    k = np.floor((z - (z - r).min()) / dmax).astype(int)
+    vol = 4.0 / 3.0 * np.pi * r ** 3 * 1e9                      # mm^3
+    loose = ~(snap[outputs.PRIMARY] > 0.5)
+    gone = np.isin(ids, list(left))
+    k = np.floor((z - (z - r).min()) / (2.0 * r.max())).astype(int)
     name = os.path.basename(os.path.normpath(run))
     out = []
     for s in range(k.max() + 1):
-        sel = [i for i, kk in zip(ids, k) if kk == s]
-        loose = sum(grains[i][0] for i in sel if not grains[i][2])
-        gone = sum(grains[i][0] for i in sel if i in left and not grains[i][2])
-        gone_all = sum(grains[i][0] for i in sel if i in left)
-        out.append({"run": name, "slice_from_outlet": s, "from_dmax": s, "to_dmax": s + 1,
-                    "grains": len(sel), "loose_volume_mm3": "%.6e" % (loose * 1e9),
-                    "eroded_loose_pct_of_slice_loose": "%.2f" % (100.0 * gone / loose if loose > 0 else 0.0),
-                    "eroded_volume_mm3": "%.6e" % (gone_all * 1e9)})
+        in_s = k == s
+        lv, gl = vol[in_s & loose].sum(), vol[in_s & loose & gone].sum()
+        out.append({"run": name, "slice_from_outlet": s, "grains": int(in_s.sum()),
+                    "loose_volume_mm3": "%.6e" % lv, "eroded_loose_volume_mm3": "%.6e" % gl,
+                    "eroded_loose_pct_of_slice_loose": "%.2f" % (100.0 * gl / lv if lv > 0 else 0.0),
+                    "eroded_volume_mm3": "%.6e" % vol[in_s & gone].sum()})
     return out
 
 
-DEPTH_FIELDS = ["run", "slice_from_outlet", "from_dmax", "to_dmax", "grains", "loose_volume_mm3",
+DEPTH_FIELDS = ["run", "slice_from_outlet", "grains", "loose_volume_mm3", "eroded_loose_volume_mm3",
                 "eroded_loose_pct_of_slice_loose", "eroded_volume_mm3"]
 STAGE_FIELDS = ["run", "gradient", "pressure_drop", "steps", "eroded_pct", "eroded_loose_pct",
                 "stage_eroded_pct", "grains_eroded", "stage_grains", "stage_primary_at_rest_pct",

@@ -41,7 +41,7 @@ def split_by_depth(slices):
     bulk's loose volume (slices 1 and up) that was eroded."""
     vol = [float(r["eroded_volume_mm3"]) for r in slices]
     loose = [float(r["loose_volume_mm3"]) for r in slices]
-    gone = [l * float(r["eroded_loose_pct_of_slice_loose"]) / 100.0 for l, r in zip(loose, slices)]
+    gone = [float(r["eroded_loose_volume_mm3"]) for r in slices]
     return {"outlet_layer_pct_of_eroded": "%.1f" % (100.0 * vol[0] / sum(vol) if sum(vol) > 0 else 0.0),
             "bulk_eroded_pct_of_bulk_loose": "%.3f" % (100.0 * sum(gone[1:]) / sum(loose[1:]))}
 
