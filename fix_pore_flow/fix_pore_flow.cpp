@@ -203,12 +203,24 @@ std::vector<fabric::Sphere> FixPoreFlow::gather() {
   std::sort(order.begin(), order.end(), [&all](long a, long b) {
     return all[kRecord * a] < all[kRecord * b];
   });
-  std::vector<fabric::Sphere> spheres(grains);
-  ids_.resize(grains);
+  // A grain whose centre has crossed the outflow face (the core's z = hi)
+  // has left the flow domain, e.g. through an outlet that deletes it only
+  // at the next neighbour-list build: it is left out of the solve and feels
+  // no force (counted in left_out). One outside any other face is an error
+  // of the core's.
+  std::vector<fabric::Sphere> spheres;
+  spheres.reserve(grains);
+  ids_.clear();
+  left_out_ = 0;
   for (long k = 0; k < grains; ++k) {
     const double *r = &all[kRecord * order[k]];
-    ids_[k] = static_cast<tagint>(r[0]);
-    spheres[k] = {to_core(r + 1, axis_, sign_), r[4]};
+    const fabric::Vec3 c = to_core(r + 1, axis_, sign_);
+    if (c.z() >= options_.box.hi.z()) {
+      ++left_out_;
+      continue;
+    }
+    ids_.push_back(static_cast<tagint>(r[0]));
+    spheres.push_back({c, r[4]});
   }
   return spheres;
 }
@@ -233,7 +245,8 @@ void FixPoreFlow::solve() {
   for (long k = 0; k < grains; ++k) force_[k] = from_core(flow.force[k], axis_, sign_);
   pressure_ = flow.grain_pressure;
   vector_ = fabric::pore_flow_vector(flow, options_,
-                                     static_cast<double>(update->ntimestep));
+                                     static_cast<double>(update->ntimestep),
+                                     left_out_);
   solved_step_ = update->ntimestep;
 }
 

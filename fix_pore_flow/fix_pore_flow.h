@@ -46,6 +46,8 @@ class FixPoreFlow : public Fix {
   fabric::PoreFlowOptions options_;  // in the core's frame (z the flow axis)
   std::vector<tagint> ids_;          // per grain of the last solve: its ID,
                                      // increasing
+  long left_out_ = 0;                // grains past the outflow face at the
+                                     // last solve, left out of it
   std::vector<std::array<double, 3>> force_;  // per grain, N, the box's frame
   std::vector<double> pressure_;     // per grain, Pa: the pores around it
   static constexpr int kAtomColumns = 4;  // fx, fy, fz, pressure

@@ -24,7 +24,8 @@
   X(5, pressure_drop, "P_in - P_out, Pa")                                      \
   X(6, pores, "pores of the network")                                          \
   X(7, iterations, "conjugate-gradient iterations of the solve")               \
-  X(8, solve_step, "the time step of the solve these figures belong to")
+  X(8, solve_step, "the time step of the solve these figures belong to")      \
+  X(9, left_out, "grains of the group past the outflow face, left out of the solve")
 
 namespace fabric {
 
@@ -36,9 +37,10 @@ static_assert(counts_from_one(kPoreFlowPositions),
               "pore_flow_outputs.h: the positions must count 1, 2, 3 ...");
 
 // The global vector of one solve (in the core's frame, whose z is the flow
-// axis), taken at time step `step`.
+// axis), taken at time step `step`, `left_out` grains past the outflow face.
 inline std::array<double, kPoreFlowEntries> pore_flow_vector(
-    const PoreFlow& flow, const PoreFlowOptions& options, double step) {
+    const PoreFlow& flow, const PoreFlowOptions& options, double step,
+    long left_out = 0) {
   std::array<double, kPoreFlowEntries> v{};
   const auto set = [&v](PoreFlowEntry e, double x) {
     v[static_cast<int>(e)] = x;
@@ -54,6 +56,7 @@ inline std::array<double, kPoreFlowEntries> pore_flow_vector(
   set(PoreFlowEntry::pores, static_cast<double>(flow.pores));
   set(PoreFlowEntry::iterations, flow.iterations);
   set(PoreFlowEntry::solve_step, step);
+  set(PoreFlowEntry::left_out, static_cast<double>(left_out));
   return v;
 }
 

@@ -19,6 +19,9 @@ sequential/pack in a cube of 3 mm, no integration, run 0) is the specimen:
 4. 1 and 2 MPI ranks give the same vector (entries 1..6) and the same
    force per grain to 1e-9 relative;
 5. every N: between solves the vector keeps the last solve's step;
+   a grain whose centre lies past the outflow face is left out of the
+   solve (entry left_out counts it, it feels no force), one past another
+   face is an error (7.);
 6. the page's examples run (examples/in.pore_flow prints what the page's
    sentence after its link says; each one-line fix runs in it) and its
    output table quotes fix_pore_flow/pore_flow_outputs.h;
@@ -221,6 +224,30 @@ def check_every(args, chk, root, scene):
               got == [0, 0, 0, 0, 0, 5, 5, 5], res.describe())
 
 
+def check_left_out(args, chk, root, scene):
+    """The box's outflow face lowered to z 2.5 mm, as an outlet's grains
+    wait for their deletion below it: the grains whose centres lie above
+    it are left out (entry left_out) and feel no force; the flow still
+    balances."""
+    cut = 0.0025
+    line = fix_line(scene)
+    got = run_measured(args, chk, root, scene.replace(line, line.replace(
+        "box 0 0.003 0 0.003 0 0.003", "box 0 0.003 0 0.003 0 %g" % cut)), "left_out")
+    if not got:
+        return
+    vec, grains = got[0], got[2]
+    past = grains["z"] >= cut
+    force = np.abs(np.column_stack([grains[c] for c in FLOW_FORCE])).sum(axis=1)
+    chk.check("outflow face at z %g: left_out %g = the %d grains centred past it, "
+              "none of them with a fluid force, every other grain with one"
+              % (cut, vec["left_out"], past.sum()),
+              0 < past.sum() == vec["left_out"] and not force[past].any()
+              and force[~past].all())
+    chk.check("outflow face at z %g: inflow %.6g = outflow %.6g to 1e-8"
+              % (cut, vec["inflow"], vec["outflow"]),
+              vec["inflow"] > 0 and rel(vec["inflow"], vec["outflow"]) < 1e-8)
+
+
 def check_page(args, chk, root, text, blocks, scene):
     want = [e for e in su.outputs.pore_flow_vector(args.source)]
     missing = ["| %d | %s | %s |" % e for e in want if "| %d | %s | %s |" % e not in text]
@@ -328,6 +355,7 @@ def main():
     check_reversed(args, chk, root, scene, one)
     check_ranks(args, chk, root, scene, one)
     check_every(args, chk, root, scene)
+    check_left_out(args, chk, root, scene)
     check_page(args, chk, root, text, blocks, scene)
     check_bad(args, chk, root, scene)
     return chk.finish()
