@@ -62,8 +62,21 @@ def models_match_csv(chk, root):
     res = os.path.join(root, "results", "models")
     table = models_table(open(os.path.join(res, "README.md"), encoding="utf-8").read())
     rows = study_rows(os.path.join(res, "study.csv"))
-    chk.check("results/models/README.md quotes every model of study.csv (%d)" % len(rows),
-              len(rows) >= 6 and set(rows) <= set(table), "table %s, csv %s" % (sorted(table), sorted(rows)))
+    text = open(os.path.join(res, "README.md"), encoding="utf-8").read()
+    full = {k for k, v in rows.items() if len(v) >= 3}
+    chk.check("results/models/README.md quotes every model of study.csv with three seeds (%d)"
+              % len(full), len(full) >= 6 and full <= set(table),
+              "table %s, csv %s" % (sorted(table), sorted(full)))
+    for (rule, soil), seeds in sorted(rows.items()):
+        if len(seeds) >= 3:
+            continue
+        tag = "DA" if rule == "discrete" else "LA"
+        line = re.search(r"^\| %s Cu %s \|(.*)$" % (tag, re.escape(soil[2:])), text, re.M)
+        want = ["%.2f" % x for x in seeds]
+        chk.check("results/models/README.md's row %s %s quotes its %d seed(s) of study.csv (%s)"
+                  % (tag, soil, len(seeds), ", ".join(want)),
+                  bool(line) and all(w in line.group(1) for w in want),
+                  line.group(0) if line else "no row")
     for key, (seeds, mean, rng) in sorted(table.items()):
         csv_seeds = rows.get(key, [])
         same = (len(csv_seeds) == len(seeds)
