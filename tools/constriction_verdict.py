@@ -157,14 +157,19 @@ def main():
                  "bash tools/build.sh)" % a.launcher)
     os.makedirs(a.dest, exist_ok=True)
     runs = sorted(os.listdir(os.path.join(a.study, "runs")))
+    # each run's soil as the study tool wrote it (its PSD file is the soil's)
+    with open(os.path.join(a.study, "study.csv")) as f:
+        soil_of = {r["name"]: r["soil"] for r in csv.DictReader(f)}
     table = []
     for name in runs:
         run = os.path.join(a.study, "runs", name)
         dump = os.path.join(run, "final.dump")
         if not os.path.isfile(dump):
             continue
-        soil = re.search(r"cu\d\.\d", name).group(0)
-        psd = os.path.join(ROOT, "input_scripts", "psd", soil + ".txt")
+        if name not in soil_of:
+            print("%s: not in %s/study.csv, skipped" % (name, a.study))
+            continue
+        psd = os.path.join(ROOT, "input_scripts", "psd", soil_of[name] + ".txt")
         g = outputs.dump_last(dump)
         work = os.path.join(a.study, "constriction", name)
         os.makedirs(work, exist_ok=True)
