@@ -3,9 +3,11 @@
 # rules, side 3.3, seed 1, at the scene's defaults, then the seepage test at
 # gradient 300 (-var gradients 300, the flow solved every 1,000 steps); the verdict of compute
 # constriction/size on the same specimens at rest; the eroded volume per
-# run, stage and size interval; the size study (Cu 2.0 up to side 7.7). Run
-# from the repository root. About 3.5
-# core-hours (Cu 3.0 and the side-7.7 runs most of it).
+# run, stage and size interval; the size study (Cu 2.0 up to side 7.7);
+# the positive control (a gap-graded soil). Run
+# from the repository root. About 4
+# core-hours (Cu 3.0 and the side-7.7 runs most of it; the gap-graded
+# control 0.7).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 py=/usr/bin/python3
@@ -81,3 +83,20 @@ $py tools/constriction_verdict.py --study out/seepage_size --dest results/seepag
 rm -f results/seepage/size/verdict/csd_*.txt     # the CSDs of side 7.7 run to megabytes: out/ keeps them
 $py tools/suffusion_report.py out/seepage_size/runs/* --out results/seepage/size
 $py results/seepage/score.py results/seepage/size
+# the positive control: a gap-graded soil (input_scripts/psd/gap10.txt, 10 %
+# of fines 0.12-0.15 mm in grains 0.75-1.0 mm), unstable by Kezdi and
+# Kenney & Lau. Packed at porosity 0.40 (the packer leaves 46-60 coarse
+# grains unplaced: the specimen holds 11.3-11.5 % fines), loaded from there
+# (t_max 1 s; overlap_max 0.1 for the lid's first impact on the loose DA
+# packing), the same seepage test with the filter of every skeleton grain
+# at the floor (opening 0.7 mm, in the gap; at the default d60, 0.88 mm,
+# the skeleton's own grains fall through); about 20 minutes a run alone
+$py tools/oedometer_study.py --sides 6 --soils gap10 --rules discrete layerwise --seeds 1 \
+    --jobs 2 --ranks 1 --var porosity=0.40 t_max=1.0 overlap_max=0.1 opening=0.7e-3 gradients=300 flow_every=1000 \
+    --out out/seepage_control
+mkdir -p results/seepage/control
+cp out/seepage_control/study.csv results/seepage/control/study.csv
+$py tools/constriction_verdict.py --study out/seepage_control --dest results/seepage/control/verdict
+rm -f results/seepage/control/verdict/csd_*.txt  # 2 MB: out/ keeps them
+$py tools/suffusion_report.py out/seepage_control/runs/* --out results/seepage/control
+$py results/seepage/score.py results/seepage/control
