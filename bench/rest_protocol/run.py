@@ -31,7 +31,12 @@ PROTOCOL = [("protocol", "DA", "cu2.5", s, "held, reload once balanced", ONCE) f
     ("protocol", "LA", "cu2.5", 2, "held, reload early, load_tol 0.003", {"load_tol": "0.003"})] + [
     ("protocol", "LA", "cu2.5", s, "servo", SERVO) for s in (2, 3)] + [
     ("protocol", "LA", "cu3.0", 2, "held, reload once balanced", ONCE),
-    ("protocol", "LA", "cu3.0", 2, "held, reload early", {})]
+    ("protocol", "LA", "cu3.0", 2, "held, reload early", {})] + [
+    # the loading's checks every 1,000 steps instead of 2,000: held, and under the servo
+    ("protocol", "DA", "cu2.5", s, "held, checks every 1,000 steps", {"every": "1000"})
+    for s in (1, 2, 3)] + [
+    ("protocol", "DA", "cu2.5", s, "servo, checks every 1,000 steps", dict(SERVO, every="1000"))
+    for s in (1, 2, 3)]
 # Cundall's local damping while loading (alpha), and the servo four times
 # slower with none: steps to rest against the answer (damping_table.csv)
 # (alpha 0.4 and 0.7 do not come to rest within 40,000 steps of relaxation
