@@ -27,6 +27,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import outputs  # noqa: E402  (the compute's output table)
+from soils import psd_path  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 # The compute's global vector, by the names of constriction_outputs.h.
@@ -169,7 +170,7 @@ def main():
         if name not in soil_of:
             print("%s: not in %s/study.csv, skipped" % (name, a.study))
             continue
-        psd = os.path.join(ROOT, "input_scripts", "psd", soil_of[name] + ".txt")
+        psd = psd_path(soil_of[name], ROOT)
         g = outputs.dump_last(dump)
         work = os.path.join(a.study, "constriction", name)
         os.makedirs(work, exist_ok=True)
